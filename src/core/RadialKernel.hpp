@@ -1,0 +1,184 @@
+// dcpRBF numerical core: radial basis functions.
+//
+// Every kernel is a function of the distance r scaled by a length R
+// (xi = r/R). For the compactly supported Wendland functions R is the support
+// radius (phi = 0 for xi >= 1); for the global kernels it is the shape length.
+// Each kernel is a tiny struct with an inline operator() so that hot loops are
+// instantiated per kernel (RadialKernel::visit) without a virtual call per
+// evaluation.
+#pragma once
+
+#include "Types.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace dcprbf
+{
+namespace kernels
+{
+
+//- Wendland C0: phi(xi) = (1 - xi)^2, compact, positive definite in R^3.
+struct WendlandC0
+{
+    double invR;
+    static constexpr bool compact = true;
+    double operator()(double r) const
+    {
+        const double xi = r*invR;
+        if (xi >= 1) return 0;
+        const double a = 1 - xi;
+        return a*a;
+    }
+};
+
+//- Wendland C2: phi(xi) = (1 - xi)^4 (4 xi + 1), compact, PD in R^3.
+struct WendlandC2
+{
+    double invR;
+    static constexpr bool compact = true;
+    double operator()(double r) const
+    {
+        const double xi = r*invR;
+        if (xi >= 1) return 0;
+        const double a = 1 - xi;
+        const double a2 = a*a;
+        return a2*a2*(4*xi + 1);
+    }
+};
+
+//- Wendland C4: phi(xi) = (1 - xi)^6 (35/3 xi^2 + 6 xi + 1), compact, PD in R^3.
+struct WendlandC4
+{
+    double invR;
+    static constexpr bool compact = true;
+    double operator()(double r) const
+    {
+        const double xi = r*invR;
+        if (xi >= 1) return 0;
+        const double a = 1 - xi;
+        const double a3 = a*a*a;
+        return a3*a3*((35.0/3.0)*xi*xi + 6*xi + 1);
+    }
+};
+
+//- Wendland C6: phi(xi) = (1 - xi)^8 (32 xi^3 + 25 xi^2 + 8 xi + 1), compact, PD in R^3.
+struct WendlandC6
+{
+    double invR;
+    static constexpr bool compact = true;
+    double operator()(double r) const
+    {
+        const double xi = r*invR;
+        if (xi >= 1) return 0;
+        const double a = 1 - xi;
+        const double a2 = a*a;
+        const double a4 = a2*a2;
+        return a4*a4*(((32*xi + 25)*xi + 8)*xi + 1);
+    }
+};
+
+//- Thin-plate spline: phi(xi) = xi^2 ln(xi), global, conditionally positive
+//  definite of order 2: needs the linear polynomial.
+struct ThinPlateSpline
+{
+    double invR;
+    static constexpr bool compact = false;
+    double operator()(double r) const
+    {
+        const double xi = r*invR;
+        return xi > 0 ? xi*xi*std::log(xi) : 0.0;
+    }
+};
+
+//- Gaussian: phi(xi) = exp(-xi^2), global, PD.
+struct Gaussian
+{
+    double invR;
+    static constexpr bool compact = false;
+    double operator()(double r) const
+    {
+        const double xi = r*invR;
+        return std::exp(-xi*xi);
+    }
+};
+
+//- Inverse multiquadric: phi(xi) = 1/sqrt(1 + xi^2), global, PD.
+struct InverseMultiquadric
+{
+    double invR;
+    static constexpr bool compact = false;
+    double operator()(double r) const
+    {
+        const double xi = r*invR;
+        return 1.0/std::sqrt(1 + xi*xi);
+    }
+};
+
+} // namespace kernels
+
+
+//- A kernel chosen at run time: its type and its length R.
+class RadialKernel
+{
+public:
+    enum class Type
+    {
+        WendlandC0, WendlandC2, WendlandC4, WendlandC6,
+        ThinPlateSpline, Gaussian, InverseMultiquadric
+    };
+
+    //- Construct from type and length R > 0 (throws Error otherwise)
+    RadialKernel(Type type, double radius);
+
+    //- Construct from a name (see names()); throws Error naming the
+    //  allowed names for an unknown one
+    static RadialKernel fromName(const std::string& name, double radius);
+
+    //- The accepted names, in Type order
+    static const std::vector<std::string>& names();
+
+    Type type() const { return type_; }
+    const std::string& name() const;
+    double radius() const { return radius_; }
+
+    //- Zero beyond the radius?
+    bool compact() const;
+
+    //- Strictly positive definite (Cholesky applies)? TPS is only
+    //  conditionally positive definite.
+    bool positiveDefinite() const { return type_ != Type::ThinPlateSpline; }
+
+    //- Needs the linear polynomial to give a solvable system?
+    bool needsPolynomial() const { return type_ == Type::ThinPlateSpline; }
+
+    //- Call f with the concrete kernel struct
+    template<class F>
+    decltype(auto) visit(F&& f) const
+    {
+        const double invR = 1.0/radius_;
+        switch (type_)
+        {
+            case Type::WendlandC0: return f(kernels::WendlandC0{invR});
+            case Type::WendlandC2: return f(kernels::WendlandC2{invR});
+            case Type::WendlandC4: return f(kernels::WendlandC4{invR});
+            case Type::WendlandC6: return f(kernels::WendlandC6{invR});
+            case Type::ThinPlateSpline: return f(kernels::ThinPlateSpline{invR});
+            case Type::Gaussian: return f(kernels::Gaussian{invR});
+            default: return f(kernels::InverseMultiquadric{invR});
+        }
+    }
+
+    //- phi(r): convenient, slower than visit() in a loop
+    double operator()(double r) const
+    {
+        return visit([r](const auto& k) { return k(r); });
+    }
+
+private:
+    Type type_;
+    double radius_;
+};
+
+} // namespace dcprbf

@@ -1,0 +1,60 @@
+// Point sets shared by the core unit tests.
+#pragma once
+
+#include "Types.hpp"
+
+#include <cmath>
+#include <random>
+
+namespace dcprbf
+{
+namespace test
+{
+
+//- n pseudo-random points in the box [0, L]^3 (z = 0 when dim = 2)
+inline Points randomPoints(int n, int dim, unsigned seed, double L = 1.0)
+{
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<double> u(0.0, L);
+    Points p(n, 3);
+    for (int i = 0; i < n; ++i)
+    {
+        p(i, 0) = u(gen);
+        p(i, 1) = u(gen);
+        p(i, 2) = dim == 3 ? u(gen) : 0.0;
+    }
+    return p;
+}
+
+//- A smooth non-polynomial vector field
+inline Values smoothField(const Points& p)
+{
+    Values v(p.rows(), 3);
+    for (Eigen::Index i = 0; i < p.rows(); ++i)
+    {
+        v(i, 0) = std::sin(3*p(i, 0)) + p(i, 1)*p(i, 1);
+        v(i, 1) = std::cos(2*p(i, 1))*p(i, 0);
+        v(i, 2) = std::exp(-p(i, 0)) - p(i, 2);
+    }
+    return v;
+}
+
+//- An affine map A x + b: rotation, stretch and translation
+inline Values affineField(const Points& p, int dim)
+{
+    Eigen::Matrix3d A;
+    A << 0.10, -0.30, 0.05,
+         0.25,  0.20, -0.10,
+        -0.05,  0.15, 0.30;
+    Eigen::RowVector3d b(0.4, -0.2, 0.7);
+    if (dim == 2)
+    {
+        A.row(2).setZero();
+        A.col(2).setZero();
+        b(2) = 0;
+    }
+    return (p*A.transpose()).rowwise() + b;
+}
+
+} // namespace test
+} // namespace dcprbf
