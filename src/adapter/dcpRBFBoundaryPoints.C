@@ -1,0 +1,169 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF: radial-basis-function mesh motion with dynamic control points
+\*---------------------------------------------------------------------------*/
+
+#include "dcpRBFBoundaryPoints.H"
+#include "Pstream.H"
+
+#include <algorithm>
+#include <numeric>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Type>
+Foam::List<Foam::List<Type>> Foam::dcpRBFBoundaryPoints::allGather
+(
+    const List<Type>& local
+)
+{
+    List<List<Type>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = local;
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+    return all;
+}
+
+
+void Foam::dcpRBFBoundaryPoints::collectLocal
+(
+    const polyMesh& mesh,
+    const labelList& movingPatchIDs,
+    const labelList& staticPatchIDs,
+    const pointField& points0
+)
+{
+    // 0: not a candidate, 1: static, 2: moving (moving wins)
+    labelList kind(mesh.nPoints(), 0);
+    for (const label patchi : staticPatchIDs)
+    {
+        for (const label pointi : mesh.boundaryMesh()[patchi].meshPoints())
+        {
+            kind[pointi] = 1;
+        }
+    }
+    for (const label patchi : movingPatchIDs)
+    {
+        for (const label pointi : mesh.boundaryMesh()[patchi].meshPoints())
+        {
+            kind[pointi] = 2;
+        }
+    }
+
+    DynamicList<label> labels;
+    DynamicList<bool> moving;
+    forAll(kind, pointi)
+    {
+        if (kind[pointi] && projection_.isControlCandidate(points0[pointi]))
+        {
+            labels.append(pointi);
+            moving.append(kind[pointi] == 2);
+        }
+    }
+    localPoints_.transfer(labels);
+    localMoving_.transfer(moving);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFBoundaryPoints::dcpRBFBoundaryPoints
+(
+    const polyMesh& mesh,
+    const dcpRBFPlaneProjection& projection,
+    const labelList& movingPatchIDs,
+    const labelList& staticPatchIDs,
+    const pointField& points0
+)
+:
+    projection_(projection)
+{
+    collectLocal(mesh, movingPatchIDs, staticPatchIDs, points0);
+
+    // All processors' candidates, concatenated in processor order
+    const List<List<point>> allPoints
+    (
+        allGather<point>(pointField(points0, localPoints_))
+    );
+    const List<List<bool>> allMoving(allGather<bool>(localMoving_));
+
+    DynamicList<FixedList<double, 3>> coords;
+    DynamicList<bool> moving;
+    forAll(allPoints, proci)
+    {
+        forAll(allPoints[proci], i)
+        {
+            FixedList<double, 3> c;
+            projection_.toCore(allPoints[proci][i], c.data());
+            coords.append(c);
+            moving.append(allMoving[proci][i]);
+        }
+    }
+
+    // Canonical order: lexicographic in core coordinates, duplicates merged
+    std::vector<label> order(coords.size());
+    std::iota(order.begin(), order.end(), 0);
+    const auto less = [&](label a, label b)
+    {
+        return std::lexicographical_compare
+        (
+            coords[a].begin(), coords[a].end(),
+            coords[b].begin(), coords[b].end()
+        );
+    };
+    std::stable_sort(order.begin(), order.end(), less);
+
+    concatToGlobal_.setSize(coords.size());
+    DynamicList<label> unique;
+    for (const label k : order)
+    {
+        if (unique.empty() || coords[unique.last()] != coords[k])
+        {
+            unique.append(k);
+        }
+        concatToGlobal_[k] = unique.size() - 1;
+    }
+
+    points_.resize(unique.size(), 3);
+    moving_.setSize(unique.size(), false);
+    forAll(unique, g)
+    {
+        for (int d = 0; d < 3; ++d) points_(g, d) = coords[unique[g]][d];
+    }
+    forAll(concatToGlobal_, k)
+    {
+        moving_[concatToGlobal_[k]] = moving_[concatToGlobal_[k]] || moving[k];
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+dcprbf::Values Foam::dcpRBFBoundaryPoints::gather
+(
+    const pointField& pointDisplacement
+) const
+{
+    vectorField local(localPoints_.size(), Zero);
+    forAll(localPoints_, i)
+    {
+        if (localMoving_[i])
+        {
+            local[i] = pointDisplacement[localPoints_[i]];
+        }
+    }
+    const List<List<vector>> all(allGather<vector>(local));
+
+    dcprbf::Values values(dcprbf::Values::Zero(size(), 3));
+    label k = 0;
+    for (const List<vector>& procValues : all)
+    {
+        for (const vector& v : procValues)
+        {
+            projection_.toCore(v, values.row(concatToGlobal_[k++]).data());
+        }
+    }
+    return values;
+}
+
+
+// ************************************************************************* //

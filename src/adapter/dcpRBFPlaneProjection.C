@@ -1,0 +1,55 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF: radial-basis-function mesh motion with dynamic control points
+\*---------------------------------------------------------------------------*/
+
+#include "dcpRBFPlaneProjection.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFPlaneProjection::dcpRBFPlaneProjection(const polyMesh& mesh)
+:
+    dim_(3),
+    axes_({0, 1, 2}),
+    midPlane_(0)
+{
+    if (mesh.nSolutionD() == 3)
+    {
+        return;
+    }
+    if (mesh.nGeometricD() != 2 || mesh.nSolutionD() != 2)
+    {
+        FatalErrorInFunction
+            << "dcpRBF supports 3D cases and 2D cases with one empty"
+            << " direction; this mesh has " << mesh.nGeometricD()
+            << " geometric and " << mesh.nSolutionD() << " solution"
+            << " directions (axisymmetric wedge or 1D cases are not"
+            << " supported)" << exit(FatalError);
+    }
+
+    const Vector<label>& geomD = mesh.geometricD();
+    direction k = 0;
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (geomD[d] == 1) axes_[k++] = d;
+        else axes_[2] = d;
+    }
+    dim_ = 2;
+    const boundBox& bb = mesh.bounds();
+    midPlane_ = 0.5*(bb.min()[axes_[2]] + bb.max()[axes_[2]]);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+dcprbf::Points Foam::dcpRBFPlaneProjection::toCore(const UList<vector>& v) const
+{
+    dcprbf::Points p(v.size(), 3);
+    forAll(v, i)
+    {
+        toCore(v[i], p.row(i).data());
+    }
+    return p;
+}
+
+
+// ************************************************************************* //
