@@ -75,7 +75,7 @@ void Foam::dcpRBFMotionSolver::setControlPoints()
             << " and staticPatches: " << e.what() << exit(FatalIOError);
     }
     Info<< typeName << ": " << interpolant_.size() << " control points ("
-        << settings_.kernel().name() << ", supportRadius "
+        << word(settings_.kernel().name()) << ", supportRadius "
         << settings_.kernel().radius() << ", polynomial "
         << Switch(settings_.polynomial()) << ", " << projection_.dim()
         << "D)" << endl;
