@@ -18,11 +18,12 @@ Foam::labelList Foam::dcpRBFSettings::readPatches
 (
     const dictionary& dict,
     const word& keyword,
-    const polyBoundaryMesh& patches
+    const polyBoundaryMesh& patches,
+    const bool allowEmpty
 )
 {
     const wordRes matchers(dict.get<wordRes>(keyword));
-    if (matchers.empty())
+    if (matchers.empty() && !allowEmpty)
     {
         FatalIOErrorInFunction(dict)
             << "Keyword " << keyword << " is an empty list. Allowed: patch"
@@ -117,6 +118,34 @@ void Foam::dcpRBFSettings::checkPatchLists
 }
 
 
+bool Foam::dcpRBFSettings::readSwitch
+(
+    const dictionary& dict,
+    const word& keyword,
+    const bool deflt
+)
+{
+    const entry* e = dict.findEntry(keyword, keyType::LITERAL);
+    if (!e)
+    {
+        return deflt;
+    }
+    const token t(e->stream());
+    const Switch sw
+    (
+        t.isWord() ? Switch(t.wordToken(), true) : Switch(Switch::INVALID)
+    );
+    if (!t.isWord() || !sw.valid())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword " << keyword << " must be a switch; got " << t
+            << ". Allowed values: true/false, on/off, yes/no"
+            << exit(FatalIOError);
+    }
+    return bool(sw);
+}
+
+
 dcprbf::RadialKernel Foam::dcpRBFSettings::readKernel(const dictionary& dict)
 {
     const word function(dict.getOrDefault<word>("function", "WendlandC2"));
@@ -146,10 +175,10 @@ Foam::dcpRBFSettings::dcpRBFSettings
     const polyMesh& mesh
 )
 :
-    movingPatchIDs_(readPatches(dict, "movingPatches", mesh.boundaryMesh())),
-    staticPatchIDs_(readPatches(dict, "staticPatches", mesh.boundaryMesh())),
+    movingPatchIDs_(readPatches(dict, "movingPatches", mesh.boundaryMesh(), false)),
+    staticPatchIDs_(readPatches(dict, "staticPatches", mesh.boundaryMesh(), true)),
     kernel_(readKernel(dict)),
-    polynomial_(dict.getOrDefault<bool>("polynomial", true)),
+    polynomial_(readSwitch(dict, "polynomial", true)),
     selection_(selectionMode::all)
 {
     checkKeywords
@@ -169,7 +198,6 @@ Foam::dcpRBFSettings::dcpRBFSettings
             << exit(FatalIOError);
     }
 
-    const dictionary& cpDict = dict.optionalSubDict("controlPoints");
     if (dict.found("controlPoints") && !dict.isDict("controlPoints"))
     {
         FatalIOErrorInFunction(dict)
@@ -178,6 +206,7 @@ Foam::dcpRBFSettings::dcpRBFSettings
     }
     if (dict.isDict("controlPoints"))
     {
+        const dictionary& cpDict = dict.subDict("controlPoints");
         checkKeywords(cpDict, {"selection"});
         const word sel(cpDict.getOrDefault<word>("selection", "all"));
         const label i = selectionNames.find(sel);

@@ -1,0 +1,78 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF tests: bad dcpRBFCoeffs give a FatalIOError naming the keyword
+\*---------------------------------------------------------------------------*/
+
+#include "testHelpers.H"
+
+#include <gtest/gtest.h>
+
+using namespace Foam;
+using namespace Foam::dcpRBFTest;
+
+namespace
+{
+
+struct badInput
+{
+    std::string name;       // test name
+    std::string coeffs;     // dcpRBFCoeffs body
+    std::string expected;   // words the error message must contain
+};
+
+const std::string ok =
+    " function WendlandC2; polynomial true;";
+
+std::vector<badInput> catalogue()
+{
+    const std::string mv = "movingPatches (bottom);";
+    const std::string st = "staticPatches (top left right);";
+    const std::string r = "supportRadius 0.5;";
+    return
+    {
+        {"UnknownFunction", mv + st + r + "function Wendland;", "Unknown function Wendland"},
+        {"UnknownFunctionListsAllowed", mv + st + r + "function cubic;", "WendlandC2"},
+        {"UnknownMovingPatch", "movingPatches (wing);" + st + r, "movingPatches"},
+        {"UnknownStaticPatch", mv + "staticPatches (inlet);" + r, "staticPatches"},
+        {"MissingMovingPatches", st + r, "movingPatches"},
+        {"EmptyMovingPatches", "movingPatches ();" + st + r, "movingPatches"},
+        {"PatchInBothLists", mv + "staticPatches (bottom top);" + r, "both"},
+        {"EmptyPatchAsMoving", "movingPatches (front);" + st + r, "empty"},
+        {"ZeroRadius", mv + st + "supportRadius 0;", "supportRadius"},
+        {"NegativeRadius", mv + st + "supportRadius -1;", "supportRadius"},
+        {"MissingRadius", mv + st, "supportRadius"},
+        {"UnknownKeyword", mv + st + r + "suportRadius 2;", "suportRadius"},
+        {"PolynomialNotBool", mv + st + r + "polynomial maybe;", "polynomial"},
+        {"TPSWithoutPolynomial", mv + st + r + "function TPS; polynomial false;", "polynomial"},
+        {"ControlPointsNotDict", mv + st + r + "controlPoints all;", "controlPoints"},
+        {"UnknownSelection", mv + st + r + "controlPoints { selection fancy; }", "selection"},
+        {"UnknownControlPointsKeyword", mv + st + r + "controlPoints { selection all; nPoints 3; }", "nPoints"},
+    };
+}
+
+class BadInput : public ::testing::TestWithParam<badInput> {};
+
+TEST_P(BadInput, FatalIOErrorNamesTheKeyword)
+{
+    const badInput& b = GetParam();
+    testCase c(2, 3, b.coeffs);
+    try
+    {
+        autoPtr<motionSolver> ms(select(c));
+        FAIL() << "no error for: " << b.coeffs;
+    }
+    catch (const Foam::IOerror& e)
+    {
+        EXPECT_NE(e.message().find(b.expected), std::string::npos)
+            << "message: " << e.message();
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P
+(
+    Catalogue, BadInput, ::testing::ValuesIn(catalogue()),
+    [](const auto& info) { return info.param.name; }
+);
+
+} // namespace
+
+// ************************************************************************* //

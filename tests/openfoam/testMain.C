@@ -1,0 +1,37 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF tests
+-------------------------------------------------------------------------------
+Description
+    GoogleTest main for the OpenFOAM tier: owns the argList (serial, no
+    banner) and turns FatalError/FatalIOError into C++ exceptions, so a test
+    can assert that bad input raises the right error.
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "error.H"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+int main(int argc, char* argv[])
+{
+    ::testing::InitGoogleTest(&argc, argv);
+
+    Foam::argList::noBanner();
+    Foam::argList::noParallel();
+    Foam::argList::noFunctionObjects();
+    Foam::argList args(argc, argv, false, false, false);
+
+    // DCPRBF_TEST_ABORT=1: let errors print and abort, to debug a test
+    if (!std::getenv("DCPRBF_TEST_ABORT"))
+    {
+        Foam::FatalError.throwExceptions();
+        Foam::FatalIOError.throwExceptions();
+    }
+
+    return RUN_ALL_TESTS();
+}
+
+// ************************************************************************* //
