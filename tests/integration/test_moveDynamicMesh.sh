@@ -21,6 +21,25 @@ boundaryField
 EOT
 }
 
+# pointDisplacement for the hollow cube: rotation about (1 1 1) by up to $1 [rad] at t = 1
+hollowCubeRotation() {
+    writeFile 0/pointDisplacement pointVectorField <<EOT
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    body
+    {
+        type angularOscillatingDisplacement;
+        axis (1 1 1); origin (0 0 0); angle0 0;
+        amplitude $1; omega 1.5707963267948966;
+        value uniform (0 0 0);
+    }
+    outer { type fixedValue; value uniform (0 0 0); }
+}
+EOT
+}
+
 # dynamicMeshDict with dcpRBFCoeffs body $1
 dynamicMeshDict() {
     writeFile constant/dynamicMeshDict dictionary <<EOT
@@ -47,21 +66,7 @@ test_airfoil2D_pitch40deg_meshValidEveryStep() {
 test_hollowCube3D_rotate30deg_meshValidEveryStep() {
     write_hollowCube . 6
     run blockMesh || return 1
-    writeFile 0/pointDisplacement pointVectorField <<'EOT'
-dimensions [0 1 0 0 0 0 0];
-internalField uniform (0 0 0);
-boundaryField
-{
-    body
-    {
-        type angularOscillatingDisplacement;
-        axis (1 1 1); origin (0 0 0); angle0 0;
-        amplitude 0.5236; omega 1.5707963267948966;
-        value uniform (0 0 0);
-    }
-    outer { type fixedValue; value uniform (0 0 0); }
-}
-EOT
+    hollowCubeRotation 0.5236
     dynamicMeshDict "movingPatches (body); staticPatches (outer); function WendlandC2; supportRadius 1.5;"
     run moveDynamicMesh || return 1
     grep -q "dcpRBF: .* control points (WendlandC2.*3D)" log.moveDynamicMesh || fail "no dcpRBF log line"

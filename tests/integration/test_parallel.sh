@@ -1,0 +1,46 @@
+# Integration tests: parallel runs give the serial points.
+
+# parallelEqualsSerial TIME: run moveDynamicMesh serial (here) and on 2
+# processors (in par/), reconstruct, compare the points at TIME: 1e-10
+# relative to the domain size
+parallelEqualsSerial() {
+    local time="$1" diff
+    mkdir -p par
+    cp -r constant system 0 par/
+    writeFile par/system/decomposeParDict dictionary <<'EOT'
+numberOfSubdomains 2;
+method simple;
+coeffs { n (2 1 1); }
+EOT
+    run moveDynamicMesh || return 1
+    (
+        cd par || exit 1
+        run decomposePar || exit 1
+        export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
+        run mpirun -np 2 moveDynamicMesh -parallel || exit 1
+        run reconstructPar -time "$time" || exit 1
+    ) || fail "parallel run failed (see par/log.*)" || return 1
+    diff=$(awk -f "$here/comparePoints.awk" "$time/polyMesh/points" "par/$time/polyMesh/points") \
+        || fail "$diff" || return 1
+    echo "serial vs parallel at t = $time: max difference, relative, points: $diff"
+    awk -v r="$(echo "$diff" | cut -d' ' -f2)" 'BEGIN { exit !(r <= 1e-10) }' \
+        || fail "parallel differs from serial: $diff"
+}
+
+test_airfoil2D_parallelEqualsSerial() {
+    write_motionControls .
+    airfoilMesh 0.04 1.0 || return 1
+    foamDictionary system/controlDict -entry endTime -set 0.5 > /dev/null
+    airfoilPointDisplacement 0.698
+    dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5;"
+    parallelEqualsSerial 0.5
+}
+
+test_hollowCube3D_parallelEqualsSerial() {
+    write_hollowCube . 5
+    run blockMesh || return 1
+    foamDictionary system/controlDict -entry endTime -set 0.5 > /dev/null
+    hollowCubeRotation 0.5236
+    dynamicMeshDict "movingPatches (body); staticPatches (outer); supportRadius 1.5;"
+    parallelEqualsSerial 0.5
+}
