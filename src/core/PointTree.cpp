@@ -1,5 +1,7 @@
 #include "PointTree.hpp"
 
+#include <algorithm>
+
 namespace dcprbf
 {
 
@@ -23,6 +25,36 @@ std::size_t PointTree::nearest(const double* q, double& distSq) const
     result.init(&index, &distSq);
     tree_->findNeighbors(result, q, searchParams());
     return index;
+}
+
+
+bool PointTree::findCoincident
+(
+    const Points& points,
+    double tol,
+    Eigen::Index& i,
+    Eigen::Index& j
+)
+{
+    const PointTree tree(points);
+    for (Eigen::Index a = 0; a < points.rows(); ++a)
+    {
+        Eigen::Index other = -1;
+        tree.forEachWithin(points.row(a).data(), tol, [&](std::size_t b, double)
+        {
+            if (Eigen::Index(b) != a && (other < 0 || Eigen::Index(b) < other))
+            {
+                other = b;
+            }
+        });
+        if (other >= 0)
+        {
+            i = std::min(a, other);
+            j = std::max(a, other);
+            return true;
+        }
+    }
+    return false;
 }
 
 } // namespace dcprbf

@@ -32,6 +32,16 @@ public:
     //  its squared distance in distSq
     std::size_t nearest(const double* q, double& distSq) const;
 
+    //- First pair i < j of points closer than tol (i over rows in order),
+    //  or false when all points are at least tol apart
+    static bool findCoincident
+    (
+        const Points& points,
+        double tol,
+        Eigen::Index& i,
+        Eigen::Index& j
+    );
+
     //- Call f(index, distSq) for every point with |p - q| < radius
     template<class F>
     void forEachWithin(const double* q, double radius, F&& f) const

@@ -2,14 +2,18 @@
 //
 // Every kernel is a function of the distance r scaled by a length R
 // (xi = r/R). For the compactly supported Wendland functions R is the support
-// radius (phi = 0 for xi >= 1); for the global kernels it is the shape length.
-// Each kernel is a tiny struct with an inline operator() so that hot loops are
-// instantiated per kernel (RadialKernel::visit) without a virtual call per
-// evaluation.
+// radius (phi = 0 for xi >= 1, written (1 - xi)_+ = max(1 - xi, 0)); for the
+// global kernels it is the shape length.
+// Each kernel is a tiny struct with an inline operator()(r) and ofSquared(r^2)
+// so that hot loops are instantiated per kernel (RadialKernel::visit) without
+// a virtual call per evaluation. ofSquared avoids the square root where the
+// formula allows it (TPS, Gaussian, IMQ) and the Wendland functions are written
+// without branches (a = max(1 - xi, 0)) so that loops over them vectorize.
 #pragma once
 
 #include "Types.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -19,7 +23,7 @@ namespace dcprbf
 namespace kernels
 {
 
-//- Wendland C0: phi(xi) = (1 - xi)^2, compact, positive definite in R^3.
+//- Wendland C0: phi(xi) = (1 - xi)_+^2, compact, positive definite in R^3.
 struct WendlandC0
 {
     double invR;
@@ -27,13 +31,13 @@ struct WendlandC0
     double operator()(double r) const
     {
         const double xi = r*invR;
-        if (xi >= 1) return 0;
-        const double a = 1 - xi;
+        const double a = std::max(1 - xi, 0.0);
         return a*a;
     }
+    double ofSquared(double r2) const { return (*this)(std::sqrt(r2)); }
 };
 
-//- Wendland C2: phi(xi) = (1 - xi)^4 (4 xi + 1), compact, PD in R^3.
+//- Wendland C2: phi(xi) = (1 - xi)_+^4 (4 xi + 1), compact, PD in R^3.
 struct WendlandC2
 {
     double invR;
@@ -41,14 +45,14 @@ struct WendlandC2
     double operator()(double r) const
     {
         const double xi = r*invR;
-        if (xi >= 1) return 0;
-        const double a = 1 - xi;
+        const double a = std::max(1 - xi, 0.0);
         const double a2 = a*a;
         return a2*a2*(4*xi + 1);
     }
+    double ofSquared(double r2) const { return (*this)(std::sqrt(r2)); }
 };
 
-//- Wendland C4: phi(xi) = (1 - xi)^6 (35/3 xi^2 + 6 xi + 1), compact, PD in R^3.
+//- Wendland C4: phi(xi) = (1 - xi)_+^6 (35/3 xi^2 + 6 xi + 1), compact, PD in R^3.
 struct WendlandC4
 {
     double invR;
@@ -56,14 +60,15 @@ struct WendlandC4
     double operator()(double r) const
     {
         const double xi = r*invR;
-        if (xi >= 1) return 0;
-        const double a = 1 - xi;
+        const double a = std::max(1 - xi, 0.0);
         const double a3 = a*a*a;
         return a3*a3*((35.0/3.0)*xi*xi + 6*xi + 1);
     }
+    double ofSquared(double r2) const { return (*this)(std::sqrt(r2)); }
 };
 
-//- Wendland C6: phi(xi) = (1 - xi)^8 (32 xi^3 + 25 xi^2 + 8 xi + 1), compact, PD in R^3.
+//- Wendland C6: phi(xi) = (1 - xi)_+^8 (32 xi^3 + 25 xi^2 + 8 xi + 1),
+//  compact, PD in R^3.
 struct WendlandC6
 {
     double invR;
@@ -71,12 +76,12 @@ struct WendlandC6
     double operator()(double r) const
     {
         const double xi = r*invR;
-        if (xi >= 1) return 0;
-        const double a = 1 - xi;
+        const double a = std::max(1 - xi, 0.0);
         const double a2 = a*a;
         const double a4 = a2*a2;
         return a4*a4*(((32*xi + 25)*xi + 8)*xi + 1);
     }
+    double ofSquared(double r2) const { return (*this)(std::sqrt(r2)); }
 };
 
 //- Thin-plate spline: phi(xi) = xi^2 ln(xi), global, conditionally positive
@@ -90,6 +95,12 @@ struct ThinPlateSpline
         const double xi = r*invR;
         return xi > 0 ? xi*xi*std::log(xi) : 0.0;
     }
+    //- xi^2 ln(xi) = xi^2 ln(xi^2)/2: no square root
+    double ofSquared(double r2) const
+    {
+        const double xi2 = r2*invR*invR;
+        return xi2 > 0 ? 0.5*xi2*std::log(xi2) : 0.0;
+    }
 };
 
 //- Gaussian: phi(xi) = exp(-xi^2), global, PD.
@@ -102,6 +113,7 @@ struct Gaussian
         const double xi = r*invR;
         return std::exp(-xi*xi);
     }
+    double ofSquared(double r2) const { return std::exp(-r2*invR*invR); }
 };
 
 //- Inverse multiquadric: phi(xi) = 1/sqrt(1 + xi^2), global, PD.
@@ -113,6 +125,10 @@ struct InverseMultiquadric
     {
         const double xi = r*invR;
         return 1.0/std::sqrt(1 + xi*xi);
+    }
+    double ofSquared(double r2) const
+    {
+        return 1.0/std::sqrt(1 + r2*invR*invR);
     }
 };
 

@@ -8,6 +8,9 @@
 // of the centres for conditioning. In 2D (dim = 2) the points' z must be 0
 // (the caller projects onto the plane).
 //
+// Polynomial frame: LinearPolynomial::boundingBox of the centres. Evaluation:
+// RbfEvaluator (kd-tree for compact kernels, blocked dense otherwise).
+//
 // Usage:
 //     RbfInterpolant s(RadialKernel::fromName("WendlandC2", 0.5), true, 3);
 //     s.setCentres(centres);   // checks and factorizes (throws Error if ill-posed)
@@ -15,8 +18,9 @@
 //     Values d = s.evaluate(volumePoints);
 #pragma once
 
-#include "PointTree.hpp"
+#include "LinearPolynomial.hpp"
 #include "RadialKernel.hpp"
+#include "RbfEvaluator.hpp"
 #include "SaddleSolver.hpp"
 
 #include <memory>
@@ -57,6 +61,13 @@ public:
     const Values& weights() const { return alpha_; }
     const Eigen::MatrixX3d& polynomialCoeffs() const { return beta_; }
 
+    //- The frame polynomialCoeffs() are written in (bounding box of the
+    //  centres)
+    const LinearPolynomial& polynomialFrame() const { return frame_; }
+
+    //- The evaluator holding the current coefficients (after solve)
+    const RbfEvaluator& evaluator() const { return evaluator_; }
+
     //- Polynomial basis (1, scaled coordinates) at the rows of x: n x (dim+1)
     Eigen::MatrixXd polynomialBasis(const Points& x) const;
 
@@ -64,19 +75,16 @@ public:
     Eigen::MatrixXd kernelMatrix(const Points& a, const Points& b) const;
 
 private:
-    void checkCentres(const Points& centres) const;
-
     RadialKernel kernel_;
     bool polynomial_;
     int dim_;
 
     Points centres_;
-    Eigen::RowVector3d shift_;
-    double invScale_;
+    LinearPolynomial frame_;
     std::unique_ptr<SaddleSolver> solver_;
-    std::unique_ptr<PointTree> tree_;
     Values alpha_;
     Eigen::MatrixX3d beta_;
+    RbfEvaluator evaluator_;
 };
 
 } // namespace dcprbf

@@ -1,6 +1,9 @@
 // Point sets shared by the core unit tests.
 #pragma once
 
+#include "LinearPolynomial.hpp"
+#include "RadialKernel.hpp"
+#include "SaddleSolver.hpp"
 #include "Types.hpp"
 
 #include <cmath>
@@ -54,6 +57,62 @@ inline Values affineField(const Points& p, int dim)
         b(2) = 0;
     }
     return (p*A.transpose()).rowwise() + b;
+}
+
+//- Kernel matrix phi(|a_i - b_j|), straightforward loops
+inline Eigen::MatrixXd kernelMatrix
+(
+    const RadialKernel& k,
+    const Points& a,
+    const Points& b
+)
+{
+    Eigen::MatrixXd K(a.rows(), b.rows());
+    for (Eigen::Index i = 0; i < a.rows(); ++i)
+    {
+        for (Eigen::Index j = 0; j < b.rows(); ++j)
+        {
+            K(i, j) = k((a.row(i) - b.row(j)).norm());
+        }
+    }
+    return K;
+}
+
+//- Solve the saddle system from scratch (SaddleSolver) in a given frame
+inline void freshSolve
+(
+    const RadialKernel& k,
+    const LinearPolynomial& frame,
+    const Points& centres,
+    const Values& values,
+    Values& alpha,
+    Eigen::MatrixX3d& beta
+)
+{
+    SaddleSolver s
+    (
+        kernelMatrix(k, centres, centres), frame.basis(centres),
+        k.positiveDefinite()
+    );
+    s.solve(values, alpha, beta);
+}
+
+//- max |a - b| / max |b| (0 for an empty b)
+template<class A, class B>
+double relDiff(const A& a, const B& b)
+{
+    if (b.size() == 0) return a.size() == 0 ? 0.0 : 1.0;
+    const double scale = b.cwiseAbs().maxCoeff();
+    return (a - b).cwiseAbs().maxCoeff()/(scale > 0 ? scale : 1.0);
+}
+
+//- Shape lengths used by the tests: support radius for the compact kernels,
+//  shorter lengths for the global ones to keep the systems well conditioned
+inline double testRadius(const std::string& name, double compactRadius = 0.6)
+{
+    if (name == "Gaussian" || name == "IMQ") return 0.1;
+    if (name == "TPS") return 1.0;
+    return compactRadius;
 }
 
 } // namespace test

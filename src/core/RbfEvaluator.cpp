@@ -1,0 +1,223 @@
+#include "RbfEvaluator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dcprbf
+{
+
+namespace
+{
+constexpr std::ptrdiff_t pointBlock = 64;
+constexpr std::ptrdiff_t centreBlock = 1024;
+}
+
+
+RbfEvaluator::RbfEvaluator
+(
+    const RadialKernel& kernel,
+    const LinearPolynomial& polynomial
+)
+:
+    kernel_(kernel),
+    polynomial_(polynomial),
+    method_(Method::Auto)
+{}
+
+
+void RbfEvaluator::assign
+(
+    const Points& centres,
+    const Values& alpha,
+    const Eigen::MatrixX3d& beta
+)
+{
+    if (alpha.rows() != centres.rows() || beta.rows() != polynomial_.size())
+    {
+        throw Error
+        (
+            "RbfEvaluator::assign: " + std::to_string(alpha.rows())
+          + " weights and " + std::to_string(beta.rows())
+          + " polynomial coefficients for " + std::to_string(centres.rows())
+          + " centres and a polynomial of size "
+          + std::to_string(polynomial_.size())
+        );
+    }
+    centres_ = centres;
+    alpha_ = alpha;
+    beta_ = beta;
+
+    const std::size_t n = centres.rows();
+    for (auto* v : {&cx_, &cy_, &cz_, &ax_, &ay_, &az_}) v->resize(n);
+    for (std::size_t j = 0; j < n; ++j)
+    {
+        cx_[j] = centres(j, 0); cy_[j] = centres(j, 1); cz_[j] = centres(j, 2);
+        ax_[j] = alpha(j, 0); ay_[j] = alpha(j, 1); az_[j] = alpha(j, 2);
+    }
+    tree_.reset(kernel_.compact() && n > 0 ? new PointTree(centres_) : nullptr);
+}
+
+
+bool RbfEvaluator::usesTree(const double* x, std::size_t n) const
+{
+    if (!tree_ || method_ == Method::Dense) return false;
+    if (method_ == Method::Tree) return true;
+    const std::size_t samples = std::min<std::size_t>(n, 64);
+    std::size_t hits = 0;
+    for (std::size_t s = 0; s < samples; ++s)
+    {
+        const double* xi = x + 3*((s*n)/samples);
+        tree_->forEachWithin(xi, kernel_.radius(), [&](std::size_t, double)
+        {
+            ++hits;
+        });
+    }
+    return 8*hits <= samples*size();
+}
+
+
+void RbfEvaluator::evaluate(const double* x, std::size_t n, double* out) const
+{
+    if (centres_.rows() == 0)
+    {
+        throw Error("RBF evaluation without centres and coefficients");
+    }
+    if (usesTree(x, n))
+    {
+        evaluateTree(x, n, out);
+    }
+    else
+    {
+        evaluateDense(x, n, out);
+    }
+}
+
+
+Values RbfEvaluator::evaluate(const Points& x) const
+{
+    Values out(x.rows(), 3);
+    evaluate(x.data(), x.rows(), out.data());
+    return out;
+}
+
+
+void RbfEvaluator::addPolynomial(const double* x, double* out) const
+{
+    if (!polynomial_.enabled()) return;
+    double p[3];
+    polynomial_.value(x, beta_, p);
+    out[0] += p[0];
+    out[1] += p[1];
+    out[2] += p[2];
+}
+
+
+void RbfEvaluator::evaluateTree(const double* x, std::size_t n, double* out) const
+{
+    const double R = kernel_.radius();
+    const double* a = alpha_.data();
+    kernel_.visit([&](const auto& phi)
+    {
+        #pragma omp parallel for schedule(dynamic, 256)
+        for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i)
+        {
+            const double* xi = x + 3*i;
+            double s[3] = {0, 0, 0};
+            tree_->forEachWithin(xi, R, [&](std::size_t j, double distSq)
+            {
+                const double w = phi.ofSquared(distSq);
+                s[0] += w*a[3*j];
+                s[1] += w*a[3*j + 1];
+                s[2] += w*a[3*j + 2];
+            });
+            addPolynomial(xi, s);
+            std::copy(s, s + 3, out + 3*i);
+        }
+    });
+}
+
+
+void RbfEvaluator::evaluateDense(const double* x, std::size_t n, double* out) const
+{
+    const std::ptrdiff_t nc = size();
+    const std::ptrdiff_t nBlocks = (std::ptrdiff_t(n) + pointBlock - 1)/pointBlock;
+    const double* cx = cx_.data();
+    const double* cy = cy_.data();
+    const double* cz = cz_.data();
+    const double* ax = ax_.data();
+    const double* ay = ay_.data();
+    const double* az = az_.data();
+
+    kernel_.visit([&](const auto& phi)
+    {
+        #pragma omp parallel for schedule(dynamic, 4)
+        for (std::ptrdiff_t b = 0; b < nBlocks; ++b)
+        {
+            const std::ptrdiff_t i0 = b*pointBlock;
+            const std::ptrdiff_t i1 = std::min<std::ptrdiff_t>(n, i0 + pointBlock);
+            double acc[3*pointBlock] = {};
+            for (std::ptrdiff_t j0 = 0; j0 < nc; j0 += centreBlock)
+            {
+                const std::ptrdiff_t j1 = std::min(nc, j0 + centreBlock);
+                for (std::ptrdiff_t i = i0; i < i1; ++i)
+                {
+                    const double x0 = x[3*i], x1 = x[3*i + 1], x2 = x[3*i + 2];
+                    double s0 = 0, s1 = 0, s2 = 0;
+                    #pragma omp simd reduction(+:s0, s1, s2)
+                    for (std::ptrdiff_t j = j0; j < j1; ++j)
+                    {
+                        const double d0 = x0 - cx[j];
+                        const double d1 = x1 - cy[j];
+                        const double d2 = x2 - cz[j];
+                        const double w = phi.ofSquared(d0*d0 + d1*d1 + d2*d2);
+                        s0 += w*ax[j];
+                        s1 += w*ay[j];
+                        s2 += w*az[j];
+                    }
+                    double* ai = acc + 3*(i - i0);
+                    ai[0] += s0;
+                    ai[1] += s1;
+                    ai[2] += s2;
+                }
+            }
+            for (std::ptrdiff_t i = i0; i < i1; ++i)
+            {
+                double* oi = out + 3*i;
+                std::copy(acc + 3*(i - i0), acc + 3*(i - i0) + 3, oi);
+                addPolynomial(x + 3*i, oi);
+            }
+        }
+    });
+}
+
+
+void RbfEvaluator::evaluateBruteForce
+(
+    const double* x,
+    std::size_t n,
+    double* out
+) const
+{
+    const Eigen::Index nc = centres_.rows();
+    kernel_.visit([&](const auto& phi)
+    {
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const double* xi = x + 3*i;
+            double s[3] = {0, 0, 0};
+            for (Eigen::Index j = 0; j < nc; ++j)
+            {
+                const double w = phi
+                (
+                    (Eigen::Map<const Eigen::RowVector3d>(xi) - centres_.row(j))
+                   .norm()
+                );
+                for (int d = 0; d < 3; ++d) s[d] += w*alpha_(j, d);
+            }
+            addPolynomial(xi, s);
+            std::copy(s, s + 3, out + 3*i);
+        }
+    });
+}
+
+} // namespace dcprbf

@@ -1,0 +1,176 @@
+// Unit tests of RbfEvaluator (tree, blocked dense and brute force agree) and
+// of LinearPolynomial (frames, unisolvence).
+#include "RbfEvaluator.hpp"
+#include "RbfInterpolant.hpp"
+#include "TestPoints.hpp"
+
+#include <gtest/gtest.h>
+
+#include <tuple>
+
+using namespace dcprbf;
+using test::randomPoints;
+
+namespace
+{
+
+// kernel name x polynomial x dimension
+using Case = std::tuple<std::string, bool, int>;
+
+class EvaluatorCase : public ::testing::TestWithParam<Case>
+{
+protected:
+    std::string name() const { return std::get<0>(GetParam()); }
+    bool poly() const { return std::get<1>(GetParam()); }
+    int dim() const { return std::get<2>(GetParam()); }
+
+    //- An evaluator with random coefficients over n random centres; the
+    //  centre count is not a multiple of the dense blocks (1024 centres)
+    RbfEvaluator make(int n, double radius) const
+    {
+        const Points c = randomPoints(n, dim(), 21);
+        const LinearPolynomial frame =
+            LinearPolynomial::boundingBox(poly(), dim(), c);
+        RbfEvaluator e(RadialKernel::fromName(name(), radius), frame);
+        Values alpha = Values::Random(n, 3);
+        Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+        e.assign(c, alpha, beta);
+        return e;
+    }
+};
+
+TEST_P(EvaluatorCase, AllMethodsEqualBruteForce)
+{
+    // 1100 centres: two centre blocks; 1000 points: a partial point block
+    RbfEvaluator e = make(1100, test::testRadius(name(), 0.2));
+    const Points x = randomPoints(1000, dim(), 22, 1.2);
+    Values ref(x.rows(), 3);
+    e.evaluateBruteForce(x.data(), x.rows(), ref.data());
+    for (auto m : {RbfEvaluator::Method::Auto, RbfEvaluator::Method::Tree,
+                   RbfEvaluator::Method::Dense})
+    {
+        e.setMethod(m);
+        const Values v = e.evaluate(x);
+        EXPECT_LT(test::relDiff(v, ref), 1e-12) << int(m);
+    }
+    // the reference itself is not trivially zero
+    EXPECT_GT(ref.cwiseAbs().maxCoeff(), 1e-3);
+}
+
+TEST_P(EvaluatorCase, AutoPicksTreeOnlyForSmallCompactSupport)
+{
+    const RbfEvaluator small = make(500, 0.1);
+    const RbfEvaluator large = make(500, 5.0);
+    const Points x = randomPoints(300, dim(), 23);
+    const bool compact = small.kernel().compact();
+    EXPECT_EQ(small.usesTree(x.data(), x.rows()), compact);
+    EXPECT_FALSE(large.usesTree(x.data(), x.rows()));
+}
+
+std::vector<Case> allCases()
+{
+    std::vector<Case> cases;
+    for (const auto& name : RadialKernel::names())
+    {
+        for (bool poly : {false, true})
+        {
+            if (name == "TPS" && !poly) continue;
+            for (int dim : {2, 3}) cases.emplace_back(name, poly, dim);
+        }
+    }
+    return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P
+(
+    KernelsPolyDim,
+    EvaluatorCase,
+    ::testing::ValuesIn(allCases()),
+    [](const ::testing::TestParamInfo<Case>& info)
+    {
+        return std::get<0>(info.param)
+            + (std::get<1>(info.param) ? "_poly" : "_noPoly")
+            + "_" + std::to_string(std::get<2>(info.param)) + "D";
+    }
+);
+
+TEST(RbfEvaluator, InterpolantUsesEvaluator)
+{
+    const Points c = randomPoints(200, 3, 24);
+    RbfInterpolant s(RadialKernel::fromName("WendlandC2", 0.3), true, 3);
+    s.fit(c, test::smoothField(c));
+    const Points x = randomPoints(500, 3, 25);
+    Values ref(x.rows(), 3);
+    s.evaluator().evaluateBruteForce(x.data(), x.rows(), ref.data());
+    EXPECT_LT(test::relDiff(s.evaluate(x), ref), 1e-12);
+    EXPECT_EQ(s.evaluator().size(), 200u);
+}
+
+TEST(RbfEvaluator, Errors)
+{
+    RbfEvaluator e
+    (
+        RadialKernel::fromName("Gaussian", 1.0),
+        LinearPolynomial(true, 3)
+    );
+    const Points c = randomPoints(10, 3, 26);
+    EXPECT_THROW(e.evaluate(c), Error);  // nothing assigned
+    EXPECT_THROW(e.assign(c, Values::Zero(9, 3), Eigen::MatrixX3d::Zero(4, 3)), Error);
+    EXPECT_THROW(e.assign(c, Values::Zero(10, 3), Eigen::MatrixX3d::Zero(3, 3)), Error);
+    EXPECT_NO_THROW(e.assign(c, Values::Zero(10, 3), Eigen::MatrixX3d::Zero(4, 3)));
+}
+
+
+// LinearPolynomial
+
+TEST(LinearPolynomial, BoundingBoxFrameKeepsBasisInUnitRange)
+{
+    const Points x = randomPoints(100, 3, 27, 50.0);
+    const LinearPolynomial p = LinearPolynomial::boundingBox(true, 3, x);
+    const Eigen::MatrixXd Q = p.basis(x);
+    EXPECT_EQ(Q.cols(), 4);
+    EXPECT_TRUE((Q.col(0).array() == 1.0).all());
+    EXPECT_LE(Q.rightCols(3).cwiseAbs().maxCoeff(), 1.0);
+    EXPECT_GT(Q.rightCols(3).cwiseAbs().maxCoeff(), 0.3);
+    EXPECT_EQ(LinearPolynomial::boundingBox(false, 2, x).size(), 0);
+}
+
+TEST(LinearPolynomial, ChangeFrameKeepsTheFunction)
+{
+    const Points x = randomPoints(20, 3, 28, 3.0);
+    for (int dim : {2, 3})
+    {
+        const LinearPolynomial a(true, dim, Eigen::RowVector3d(0.3, -1, 2), 0.7);
+        const LinearPolynomial b(true, dim, Eigen::RowVector3d(-5, 4, 1), 3.1);
+        const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(dim + 1, 3);
+        const Eigen::MatrixX3d betaB = a.changeFrame(beta, b);
+        EXPECT_LT(test::relDiff(b.basis(x)*betaB, a.basis(x)*beta), 1e-13);
+        EXPECT_GT((betaB - beta).cwiseAbs().maxCoeff(), 0.1);  // not trivial
+    }
+    EXPECT_THROW
+    (
+        LinearPolynomial(true, 3).changeFrame
+        (
+            Eigen::MatrixX3d::Zero(4, 3), LinearPolynomial(true, 2)
+        ),
+        Error
+    );
+}
+
+TEST(LinearPolynomial, UnisolvenceChecks)
+{
+    const LinearPolynomial p3(true, 3), p2(true, 2);
+    Points coplanar = randomPoints(10, 3, 29);
+    coplanar.col(2) = (0.5*coplanar.col(0)).array() + 0.2;  // a tilted plane
+    EXPECT_THROW(p3.checkUnisolvent(coplanar), Error);
+    EXPECT_NO_THROW(p2.checkUnisolvent(randomPoints(3, 2, 30)));
+    Points collinear(5, 3);
+    for (int i = 0; i < 5; ++i) collinear.row(i) << i, 2.0*i - 1, 0;
+    EXPECT_THROW(p2.checkUnisolvent(collinear), Error);
+    EXPECT_THROW(p3.checkUnisolvent(randomPoints(3, 3, 31)), Error);  // too few
+    EXPECT_NO_THROW(LinearPolynomial(false, 3).checkUnisolvent(collinear));
+    EXPECT_THROW(LinearPolynomial(true, 4), Error);
+    EXPECT_THROW(LinearPolynomial(true, 3, Eigen::RowVector3d::Zero(), 0.0), Error);
+}
+
+} // namespace
