@@ -82,6 +82,84 @@ void Foam::dcpRBFMotionSolver::setControlPoints()
 }
 
 
+void Foam::dcpRBFMotionSolver::markPrescribedPoints()
+{
+    for (const label patchi : settings_.movingPatchIDs())
+    {
+        for (const label pointi : mesh().boundaryMesh()[patchi].meshPoints())
+        {
+            prescribed_[pointi] = true;
+        }
+    }
+}
+
+
+void Foam::dcpRBFMotionSolver::interpolateDisplacement()
+{
+    dcprbf::Values s(evalPoints_.rows(), 3);
+    interpolant_.evaluate(evalPoints_.data(), evalPoints_.rows(), s.data());
+
+    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    forAll(disp, pointi)
+    {
+        if (!prescribed_[pointi])
+        {
+            disp[pointi] = projection_.fromCore(s.row(pointi).data());
+        }
+    }
+    for (const label patchi : settings_.staticPatchIDs())
+    {
+        for (const label pointi : mesh().boundaryMesh()[patchi].meshPoints())
+        {
+            if (!prescribed_[pointi]) disp[pointi] = Zero;
+        }
+    }
+    pointDisplacement_.correctBoundaryConditions();
+}
+
+
+Foam::scalar Foam::dcpRBFMotionSolver::boundaryError
+(
+    const dcprbf::Values& d
+) const
+{
+    const dcprbf::Values s(interpolant_.evaluate(boundaryPoints_.points()));
+    scalar err = 0;
+    forAll(boundaryPoints_.moving(), i)
+    {
+        if (boundaryPoints_.moving()[i])
+        {
+            err = max(err, (s.row(i) - d.row(i)).norm());
+        }
+    }
+    const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
+    return dMax > 0 ? err/dMax : 0;
+}
+
+
+void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r) const
+{
+    const vectorField& disp = pointDisplacement_.primitiveField();
+    const pointField p(points0() + disp);
+    const scalar tol = 1e-12*mesh().bounds().mag();
+    const labelList cells(quality_.movedCells(disp, tol));
+    const scalarField q(quality_.compute(cells, points0(), p));
+
+    r.nMovedCells = returnReduce(cells.size(), sumOp<label>());
+    r.minQuality = r.nMovedCells ? gMin(q) : 1;
+    r.meanQuality = r.nMovedCells ? gSum(q)/r.nMovedCells : 1;
+    const label nInverted = returnReduce(label(std::count_if(q.begin(), q.end(), [](scalar x) { return x <= 0; })), sumOp<label>());
+    if (nInverted)
+    {
+        WarningInFunction
+            << "Time " << mesh().time().timeName() << ": " << nInverted
+            << " inverted or degenerate cells (quality <= 0, minimum "
+            << r.minQuality << "). The mesh is invalid: reduce the motion"
+            << " per step or enlarge supportRadius." << endl;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
@@ -102,8 +180,12 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
         points0()
     ),
     evalPoints_(projection_.toCore(points0())),
-    interpolant_(settings_.kernel(), settings_.polynomial(), projection_.dim())
+    interpolant_(settings_.kernel(), settings_.polynomial(), projection_.dim()),
+    prescribed_(mesh.nPoints(), false),
+    quality_(mesh),
+    log_(mesh.time())
 {
+    markPrescribedPoints();
     warnUnlistedPatches();
     setControlPoints();
 }
@@ -129,8 +211,12 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
         this->points0()
     ),
     evalPoints_(projection_.toCore(this->points0())),
-    interpolant_(settings_.kernel(), settings_.polynomial(), projection_.dim())
+    interpolant_(settings_.kernel(), settings_.polynomial(), projection_.dim()),
+    prescribed_(mesh.nPoints(), false),
+    quality_(mesh),
+    log_(mesh.time())
 {
+    markPrescribedPoints();
     warnUnlistedPatches();
     setControlPoints();
 }
@@ -152,6 +238,7 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::curPoints() const
 void Foam::dcpRBFMotionSolver::solve()
 {
     clockTime timer;
+    dcpRBFStepLog::record r;
 
     // Boundary conditions: prescribed displacement into the point field
     pointDisplacement_.boundaryFieldRef().updateCoeffs();
@@ -170,46 +257,15 @@ void Foam::dcpRBFMotionSolver::solve()
         FatalErrorInFunction
             << "RBF solve failed: " << e.what() << exit(FatalError);
     }
-    const scalar solveTime = timer.timeIncrement();
+    r.solveTime = timer.timeIncrement();
 
-    // Interpolate at every point, keep the prescribed boundary values
-    dcprbf::Values s(evalPoints_.rows(), 3);
-    interpolant_.evaluate(evalPoints_.data(), evalPoints_.rows(), s.data());
+    interpolateDisplacement();
+    r.evalTime = timer.timeIncrement();
 
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
-    boolList prescribed(mesh().nPoints(), false);
-    const auto markPatches = [&](const labelList& patchIDs)
-    {
-        for (const label patchi : patchIDs)
-        {
-            for (const label pointi : mesh().boundaryMesh()[patchi].meshPoints())
-            {
-                prescribed[pointi] = true;
-            }
-        }
-    };
-    markPatches(settings_.movingPatchIDs());
-    forAll(disp, pointi)
-    {
-        if (!prescribed[pointi])
-        {
-            disp[pointi] = projection_.fromCore(s.row(pointi).data());
-        }
-    }
-    for (const label patchi : settings_.staticPatchIDs())
-    {
-        for (const label pointi : mesh().boundaryMesh()[patchi].meshPoints())
-        {
-            if (!prescribed[pointi]) disp[pointi] = Zero;
-        }
-    }
-    pointDisplacement_.correctBoundaryConditions();
-
-    const scalar evalTime = timer.timeIncrement();
-    Info<< typeName << ": " << interpolant_.size() << " control points,"
-        << " max boundary displacement " << d.rowwise().norm().maxCoeff()
-        << ", solve " << solveTime << " s, evaluation " << evalTime << " s"
-        << endl;
+    r.nControl = interpolant_.size();
+    r.boundaryError = boundaryError(d);
+    measureQuality(r);
+    log_.write(r);
 }
 
 
