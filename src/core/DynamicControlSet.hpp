@@ -1,0 +1,97 @@
+// dcpRBF numerical core: a control set drawn from a fixed set of candidate
+// points (the boundary points), changed one point at a time: the dynamic
+// control points of Niu, Lei & He (2017).
+//
+// Rules ("neighbouring" made precise):
+//  - addNearest(x):    the candidate nearest to x that is not a control
+//                      point joins the set (O(Nb) search, O(N^2) update). If
+//                      the solver refuses it (numerically dependent point),
+//                      the next nearest is tried, up to maxTries.
+//  - removeNearest(x): the removable control point nearest to x leaves the
+//                      set, skipping points added less than protectSteps
+//                      steps ago; never below minPoints; a removal the
+//                      solver refuses (polynomial no longer solvable) is
+//                      skipped for the next nearest.
+//  - maxPoints caps additions.
+// The polynomial frame is the candidates' bounding box, fixed for the life
+// of the set, so coefficients keep their meaning through the changes.
+#pragma once
+
+#include "IncrementalSaddleSolver.hpp"
+#include "RbfEvaluator.hpp"
+
+#include <limits>
+#include <vector>
+
+namespace dcprbf
+{
+
+class DynamicControlSet
+{
+public:
+    struct Options
+    {
+        Eigen::Index minPoints = 0;
+        Eigen::Index maxPoints = std::numeric_limits<Eigen::Index>::max();
+        int protectSteps = 3;
+        int maxTries = 8;
+    };
+
+    //- removable[i]: candidate i may leave the set (e.g. on a moving patch)
+    DynamicControlSet
+    (
+        const Points& candidates,
+        const std::vector<char>& removable,
+        const RadialKernel& kernel,
+        bool polynomial,
+        int dim,
+        const Options& options
+    );
+
+    //- Start from these candidates (indices), O(N^3). Throws Error.
+    void reset(const std::vector<Eigen::Index>& indices);
+
+    //- Candidate index of each centre, in the solver's order
+    const std::vector<Eigen::Index>& indices() const { return indices_; }
+
+    Eigen::Index size() const { return Eigen::Index(indices_.size()); }
+
+    bool contains(Eigen::Index candidate) const { return inSet_[candidate]; }
+
+    //- See the rules above. Return the candidate index, or -1 if none
+    Eigen::Index addNearest(const Eigen::RowVector3d& x);
+    Eigen::Index removeNearest(const Eigen::RowVector3d& x);
+
+    //- One more step has passed (ages of the points grow)
+    void nextStep();
+
+    //- Solve for the values at every candidate (rows: candidates) and set
+    //  the evaluator. O(N^2) plus the evaluator's assign.
+    void solve(const Values& candidateValues);
+
+    const RbfEvaluator& evaluator() const { return evaluator_; }
+    const IncrementalSaddleSolver& solver() const { return solver_; }
+    const Points& candidates() const { return candidates_; }
+
+private:
+    //- Candidates ordered by distance to x, keeping those pred accepts
+    template<class Pred>
+    std::vector<Eigen::Index> nearestFirst
+    (
+        const Eigen::RowVector3d& x,
+        const std::vector<Eigen::Index>& pool,
+        Pred accept
+    ) const;
+
+    Points candidates_;
+    std::vector<char> removable_;
+    Options options_;
+    IncrementalSaddleSolver solver_;
+    RbfEvaluator evaluator_;
+
+    std::vector<Eigen::Index> indices_;
+    std::vector<char> inSet_;
+    std::vector<int> age_;   // per centre, steps since it joined
+};
+
+} // namespace dcprbf
