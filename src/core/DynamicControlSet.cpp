@@ -74,6 +74,31 @@ std::vector<Eigen::Index> DynamicControlSet::nearestFirst
 }
 
 
+bool DynamicControlSet::add(Eigen::Index i)
+{
+    if (i < 0 || i >= candidates_.rows() || inSet_[i])
+    {
+        throw Error("candidate index out of range or already a control point");
+    }
+    if (size() >= options_.maxPoints) return false;
+    solver_.add(candidates_.row(i));
+    indices_.push_back(i);
+    inSet_[i] = 1;
+    age_.push_back(0);
+    return true;
+}
+
+
+void DynamicControlSet::setAges(const std::vector<int>& ages)
+{
+    if (ages.size() != indices_.size())
+    {
+        throw Error("one age per control point is needed");
+    }
+    age_ = ages;
+}
+
+
 Eigen::Index DynamicControlSet::addNearest(const Eigen::RowVector3d& x)
 {
     if (size() >= options_.maxPoints) return -1;
@@ -83,15 +108,12 @@ Eigen::Index DynamicControlSet::addNearest(const Eigen::RowVector3d& x)
     {
         try
         {
-            solver_.add(candidates_.row(i));
+            add(i);
         }
         catch (const Error&)
         {
             continue;   // numerically dependent on the set: try the next
         }
-        indices_.push_back(i);
-        inSet_[i] = 1;
-        age_.push_back(0);
         return i;
     }
     return -1;

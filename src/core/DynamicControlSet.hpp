@@ -58,6 +58,16 @@ public:
 
     bool contains(Eigen::Index candidate) const { return inSet_[candidate]; }
 
+    //- Add candidate i (not yet in the set). Throws Error if the solver
+    //  refuses it; false (nothing done) at maxPoints
+    bool add(Eigen::Index i);
+
+    //- Ages of the centres (steps since each joined), in the solver's order
+    const std::vector<int>& ages() const { return age_; }
+
+    //- Restore ages after reset() (e.g. on restart)
+    void setAges(const std::vector<int>& ages);
+
     //- See the rules above. Return the candidate index, or -1 if none
     Eigen::Index addNearest(const Eigen::RowVector3d& x);
     Eigen::Index removeNearest(const Eigen::RowVector3d& x);

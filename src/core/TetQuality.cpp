@@ -8,7 +8,12 @@
 namespace dcprbf
 {
 
-double TetQuality::compute(const Eigen::Matrix3d& E0, const Eigen::Matrix3d& E)
+double TetQuality::compute
+(
+    const Eigen::Matrix3d& E0,
+    const Eigen::Matrix3d& E,
+    Metric metric
+)
 {
     const double det0 = E0.determinant();
     const double scale = E0.colwise().norm().maxCoeff();
@@ -24,14 +29,20 @@ double TetQuality::compute(const Eigen::Matrix3d& E0, const Eigen::Matrix3d& E)
     }
     const double fSize = std::min(J, 1.0/J);
     const double fShape = 3.0*std::cbrt(J*J)/A.squaredNorm();
-    return std::sqrt(fSize)*fShape;
+    switch (metric)
+    {
+        case Metric::size: return fSize;
+        case Metric::shape: return fShape;
+        default: return std::sqrt(fSize)*fShape;
+    }
 }
 
 
 double TetQuality::compute
 (
     const Eigen::Vector3d ref[4],
-    const Eigen::Vector3d cur[4]
+    const Eigen::Vector3d cur[4],
+    Metric metric
 )
 {
     Eigen::Matrix3d E0, E;
@@ -40,7 +51,7 @@ double TetQuality::compute
         E0.col(k) = ref[k + 1] - ref[0];
         E.col(k) = cur[k + 1] - cur[0];
     }
-    return compute(E0, E);
+    return compute(E0, E, metric);
 }
 
 } // namespace dcprbf

@@ -13,7 +13,8 @@
 //
 // so q = 1 for a rigid motion of the tetrahedron, 0 < q < 1 for a distorted
 // one, q <= 0 for an inverted or flat one. A degenerate reference (V0 = 0)
-// gives q = 1 (nothing to compare with).
+// gives q = 1 (nothing to compare with). Metric::size keeps only f_size,
+// Metric::shape only f_shape (both with q = J for J <= 0).
 #pragma once
 
 #include <Eigen/Core>
@@ -24,15 +25,23 @@ namespace dcprbf
 class TetQuality
 {
 public:
+    enum class Metric { sizeShape, size, shape };
+
     //- Quality of the tetrahedron (p0, p1, p2, p3) moved to (q0, q1, q2, q3)
     static double compute
     (
         const Eigen::Vector3d ref[4],
-        const Eigen::Vector3d cur[4]
+        const Eigen::Vector3d cur[4],
+        Metric metric = Metric::sizeShape
     );
 
     //- Quality from the edge matrices (columns: edges from vertex 0)
-    static double compute(const Eigen::Matrix3d& E0, const Eigen::Matrix3d& E);
+    static double compute
+    (
+        const Eigen::Matrix3d& E0,
+        const Eigen::Matrix3d& E,
+        Metric metric = Metric::sizeShape
+    );
 };
 
 } // namespace dcprbf

@@ -128,3 +128,25 @@ TEST(DynamicControlSet, Errors)
 }
 
 } // namespace
+
+namespace
+{
+
+TEST(DynamicControlSet, AddByIndexAndAges)
+{
+    Fixture f;
+    DynamicControlSet s = f.make({0, 41, 3, 8});
+    EXPECT_THROW(s.add(0), Error);          // already in (0 = 7*0)
+    EXPECT_THROW(s.add(300), Error);        // out of range
+    EXPECT_TRUE(s.add(1));
+    EXPECT_FALSE(s.add(2));                 // maxPoints reached
+    EXPECT_EQ(s.ages().back(), 0);
+    s.nextStep();
+    EXPECT_EQ(s.ages().back(), 1);
+    std::vector<int> a(s.size(), 5);
+    s.setAges(a);
+    EXPECT_EQ(s.ages().front(), 5);
+    EXPECT_THROW(s.setAges({1, 2}), Error);
+}
+
+} // namespace

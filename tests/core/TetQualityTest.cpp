@@ -75,3 +75,22 @@ TEST(TetQuality, DegenerateReferenceIsOne)
 }
 
 } // namespace
+
+namespace
+{
+
+TEST(TetQuality, MetricsSeparateSizeAndShape)
+{
+    const Tet t = regular();
+    const double s = 1.3;
+    const Tet scaled = map(t, s*Eigen::Matrix3d::Identity(), {0, 0, 0});
+    EXPECT_NEAR(TetQuality::compute(t.p, scaled.p, TetQuality::Metric::shape), 1.0, 1e-13);
+    EXPECT_NEAR(TetQuality::compute(t.p, scaled.p, TetQuality::Metric::size), 1/(s*s*s), 1e-13);
+    Eigen::Matrix3d S = Eigen::Matrix3d::Identity();
+    S(0, 1) = 0.5;  // volume preserving
+    const Tet sheared = map(t, S, {0, 0, 0});
+    EXPECT_NEAR(TetQuality::compute(t.p, sheared.p, TetQuality::Metric::size), 1.0, 1e-13);
+    EXPECT_LT(TetQuality::compute(t.p, sheared.p, TetQuality::Metric::shape), 0.95);
+}
+
+} // namespace
