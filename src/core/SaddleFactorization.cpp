@@ -79,7 +79,9 @@ void SaddleFactorization::factorizeWithCurrentShift(const Points& c)
 
 void SaddleFactorization::updateSchur()
 {
-    if (!polynomial().enabled()) return;
+    // below m points S is singular by construction: a set being built
+    // point by point (greedy seed) gets its S with the m-th point
+    if (n_ < polynomial().size()) return;
     const auto W = W_.topRows(n_);
     schur_.compute(W.transpose()*W);
     if (schur_.info() != Eigen::Success)

@@ -10,7 +10,8 @@
 // Append x:  l = L^{-1} k_c(C, x),  pivot = sqrt(K_c(x, x) - l.l),
 //            w = (q(x) - W^T l)/pivot appended to W;            O(N^2)
 // Delete i:  Givens downdate of L, the same rotations on W;     O(N^2)
-// S is rebuilt from W after every change (O(N m^2)).
+// S is rebuilt from W after every change (O(N m^2)); while N < m (a set
+// built point by point) it is not formed, and solve() needs N >= m.
 //
 // TPS (c > 0): the forward error of the shifted Cholesky grows like c, so
 // solve() adds two steps of iterative refinement with the residual of the

@@ -72,6 +72,14 @@ public:
             .solveInPlace(B);
     }
 
+    //- B <- B L^{-T} (B has size() columns)
+    template<class Derived>
+    void solveRightUpperInPlace(Eigen::MatrixBase<Derived>& B) const
+    {
+        L_.topLeftCorner(n_, n_).triangularView<Eigen::Lower>().transpose()
+            .template solveInPlace<Eigen::OnTheRight>(B);
+    }
+
 private:
     //- Make room for at least n rows/columns (amortized doubling)
     void reserve(Eigen::Index n);

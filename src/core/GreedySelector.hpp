@@ -1,0 +1,142 @@
+// dcpRBF numerical core: greedy selection of control points among candidate
+// boundary points (Rendall & Allen 2009), optionally double-edged
+// (Wang et al. 2015).
+//
+// Given candidates x_i with displacements d_i (i < Nb):
+//   1. seed C with a small set that carries the polynomial (see seed());
+//   2. interpolate d on C, residual e_i = d_i - s_C(x_i) at every candidate;
+//   3. relative error  eps = max_{i not in C} |e_i| / max_i |d_i|;
+//      stop when (eps <= tolerance and |C| >= minPoints), |C| == maxPoints or
+//      every candidate is in C;
+//   4. add the candidate w with the largest |e_w| (ties: the lowest index);
+//      double-edged: also the largest |e_j| among those with e_j . e_w < 0
+//      (the "other edge" of the error), both from the same residual; go to 2.
+//
+// select() runs it incrementally (IncrementalGreedyModel: one new row of the
+// Cholesky factor and one Newton basis column, O(N Nb) per point, nothing
+// re-solved); selectNaive() re-solves the whole system per iteration
+// (NaiveGreedyModel, O(N^3 + N Nb)), as a reference for tests and benchmarks.
+// Both share this loop, so they differ only in round-off.
+//
+// The polynomial frame is the bounding box of the candidates
+// (LinearPolynomial::boundingBox), beta is written in it.
+#pragma once
+
+#include "GreedyModel.hpp"
+#include "LinearPolynomial.hpp"
+#include "RadialKernel.hpp"
+#include "SaddleFactorization.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace dcprbf
+{
+
+struct GreedyOptions
+{
+    //- Stop at relative max error <= tolerance (> 0)
+    double tolerance = 1e-3;
+
+    //- At least this many points (0: the seed's size)
+    Eigen::Index minPoints = 0;
+
+    //- At most this many points (>= minPoints and >= the seed's size)
+    Eigen::Index maxPoints = 1000;
+
+    //- Add the worst point of the opposite error direction too
+    bool doubleEdged = false;
+
+    //- Seed candidate indices; empty: automatic (see GreedySelector::seed)
+    std::vector<Eigen::Index> seed;
+};
+
+
+struct GreedyResult
+{
+    explicit GreedyResult(const LinearPolynomial& f) : frame(f) {}
+
+    //- Selected candidate indices in selection order (the seed first)
+    std::vector<Eigen::Index> selected;
+
+    //- Their coordinates, in the same order
+    Points centres;
+
+    //- Kernel weights (row j for selected[j]) and polynomial coefficients
+    //  (in frame) of the interpolant on the selected points
+    Values alpha;
+    Eigen::MatrixX3d beta;
+    LinearPolynomial frame;
+
+    //- History: number of control points and relative max error after the
+    //  seed and after every iteration
+    std::vector<Eigen::Index> historySize;
+    std::vector<double> historyError;
+
+    //- Was the tolerance met?
+    bool converged = false;
+
+    //- max_i |d_i| (the error scale)
+    double maxDisplacement = 0;
+
+    //- select() only: the factorization of the selected set, ready for
+    //  IncrementalSaddleSolver(std::move(*factorization)); null from
+    //  selectNaive()
+    std::unique_ptr<SaddleFactorization> factorization;
+};
+
+
+class GreedySelector
+{
+public:
+    //- Throws Error for inconsistent options (tolerance <= 0, maxPoints <
+    //  minPoints, ...) or kernel settings (TPS without polynomial, dim)
+    GreedySelector
+    (
+        const RadialKernel& kernel,
+        bool polynomial,
+        int dim,
+        const GreedyOptions& options = GreedyOptions()
+    );
+
+    //- Incremental selection. Throws Error for ill-posed input (sizes,
+    //  non-finite values, duplicate candidates, candidates that cannot carry
+    //  the polynomial, a candidate numerically dependent on the selected ones)
+    GreedyResult select(const Points& candidates, const Values& displacements) const;
+
+    //- The same selection re-solving the full system per iteration
+    //  (reference: tests and benchmarks only)
+    GreedyResult selectNaive(const Points& candidates, const Values& displacements) const;
+
+    //- The automatic seed. Without the polynomial: the candidate of largest
+    //  |d|. With it, dim + 1 points spanning a well-shaped simplex: the one of
+    //  largest |d|, the candidate farthest from it, the one farthest from the
+    //  line through both, and in 3D the one farthest from their plane. Error
+    //  if the candidates are collinear (2D) or coplanar (3D).
+    std::vector<Eigen::Index> seed
+    (
+        const Points& candidates,
+        const Values& displacements
+    ) const;
+
+    const GreedyOptions& options() const { return options_; }
+
+private:
+    void checkInput(const Points& candidates, const Values& displacements) const;
+
+    //- The loop, on either model
+    void run
+    (
+        GreedyModel& model,
+        const std::vector<Eigen::Index>& seed,
+        const Values& displacements,
+        GreedyResult& result
+    ) const;
+
+    RadialKernel kernel_;
+    bool polynomial_;
+    int dim_;
+    GreedyOptions options_;
+};
+
+} // namespace dcprbf

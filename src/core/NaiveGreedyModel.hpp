@@ -1,0 +1,43 @@
+// dcpRBF numerical core: the reference model of the greedy selection. Every
+// change of the selected set C assembles and solves the whole saddle system
+// again (SaddleSolver: Cholesky + Schur complement, LU for TPS; O(N^3)) and
+// evaluates the interpolant at every candidate (RbfEvaluator; O(N Nb)).
+// Used by the tests (the incremental model must pick the same points) and the
+// benchmark; not meant for production.
+#pragma once
+
+#include "GreedyModel.hpp"
+#include "LinearPolynomial.hpp"
+#include "RadialKernel.hpp"
+
+namespace dcprbf
+{
+
+class NaiveGreedyModel : public GreedyModel
+{
+public:
+    //- The model keeps references to candidates and displacements
+    NaiveGreedyModel
+    (
+        const RadialKernel& kernel,
+        const LinearPolynomial& polynomial,
+        const Points& candidates,
+        const Values& displacements
+    );
+
+    void add(const std::vector<Eigen::Index>& indices) override;
+    const Values& residual() const override { return residual_; }
+    void coefficients(Values& alpha, Eigen::MatrixX3d& beta) const override;
+
+private:
+    RadialKernel kernel_;
+    LinearPolynomial polynomial_;
+    const Points& x_;
+    const Values& d_;
+    std::vector<Eigen::Index> selected_;
+    Values alpha_;
+    Eigen::MatrixX3d beta_;
+    Values residual_;
+};
+
+} // namespace dcprbf
