@@ -7,9 +7,14 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::dcpRBFCellQuality::dcpRBFCellQuality(const polyMesh& mesh)
+Foam::dcpRBFCellQuality::dcpRBFCellQuality
+(
+    const polyMesh& mesh,
+    dcprbf::TetQuality::Metric metric
+)
 :
-    mesh_(mesh)
+    mesh_(mesh),
+    metric_(metric)
 {}
 
 
@@ -52,7 +57,7 @@ Foam::scalar Foam::dcpRBFCellQuality::cellQuality
             const label a = f[i], b = f.nextLabel(i);
             const Eigen::Vector3d ref[4] = {cc0, fc0, vec(p0[a]), vec(p0[b])};
             const Eigen::Vector3d cur[4] = {cc, fc, vec(p[a]), vec(p[b])};
-            q = min(q, dcprbf::TetQuality::compute(ref, cur));
+            q = min(q, dcprbf::TetQuality::compute(ref, cur, metric_));
         }
     }
     return q;

@@ -7,6 +7,8 @@
 #include "addToRunTimeSelectionTable.H"
 #include "emptyPolyPatch.H"
 #include "clockTime.H"
+#include "OFstream.H"
+#include "OSspecific.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -28,6 +30,28 @@ namespace Foam
         displacement
     );
 }
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Moving boundary points (core coordinates)
+dcprbf::Points movingPoints(const Foam::dcpRBFBoundaryPoints& b)
+{
+    Foam::label n = 0;
+    for (const bool m : b.moving()) n += m;
+    dcprbf::Points p(n, 3);
+    n = 0;
+    forAll(b.moving(), i)
+    {
+        if (b.moving()[i]) p.row(n++) = b.points().row(i);
+    }
+    return p;
+}
+
+} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -61,106 +85,173 @@ void Foam::dcpRBFMotionSolver::warnUnlistedPatches() const
 }
 
 
-void Foam::dcpRBFMotionSolver::setControlPoints()
+void Foam::dcpRBFMotionSolver::markBoundaryPoints()
 {
-    try
+    const polyBoundaryMesh& patches = mesh().boundaryMesh();
+    for (const label patchi : settings_.staticPatchIDs())
     {
-        interpolant_.setCentres(boundaryPoints_.points());
+        for (const label pointi : patches[patchi].meshPoints())
+        {
+            onBoundary_[pointi] = true;
+        }
     }
-    catch (const dcprbf::Error& e)
-    {
-        FatalIOErrorInFunction(coeffDict())
-            << "Cannot build the RBF system on the "
-            << boundaryPoints_.size() << " control points of movingPatches"
-            << " and staticPatches: " << e.what() << exit(FatalIOError);
-    }
-    Info<< typeName << ": " << interpolant_.size() << " control points ("
-        << word(settings_.kernel().name()) << ", supportRadius "
-        << settings_.kernel().radius() << ", polynomial "
-        << Switch(settings_.polynomial()) << ", " << projection_.dim()
-        << "D)" << endl;
-}
-
-
-void Foam::dcpRBFMotionSolver::markPrescribedPoints()
-{
     for (const label patchi : settings_.movingPatchIDs())
     {
-        for (const label pointi : mesh().boundaryMesh()[patchi].meshPoints())
+        for (const label pointi : patches[patchi].meshPoints())
         {
+            onBoundary_[pointi] = true;
             prescribed_[pointi] = true;
         }
     }
 }
 
 
-void Foam::dcpRBFMotionSolver::interpolateDisplacement()
+Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
+(
+    const dcprbf::Values& d
+)
 {
-    dcprbf::Values s(evalPoints_.rows(), 3);
-    interpolant_.evaluate(evalPoints_.data(), evalPoints_.rows(), s.data());
+    const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
+    dcprbf::Values v(evalPoints_.rows(), 3);
+    s.evaluate(evalPoints_.data(), evalPoints_.rows(), v.data());
 
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
     forAll(disp, pointi)
     {
         if (!prescribed_[pointi])
         {
-            disp[pointi] = projection_.fromCore(s.row(pointi).data());
+            disp[pointi] =
+                onBoundary_[pointi] ? Zero : projection_.fromCore(v.row(pointi).data());
         }
     }
-    for (const label patchi : settings_.staticPatchIDs())
+
+    // Error at the boundary points, blended into the volume
+    const dcprbf::Values error(d - s.evaluate(boundaryPoints_.points()));
+    if (settings_.boundaryCorrection())
     {
-        for (const label pointi : mesh().boundaryMesh()[patchi].meshPoints())
-        {
-            if (!prescribed_[pointi]) disp[pointi] = Zero;
-        }
+        correction_.apply(error, onBoundary_, projection_, disp);
     }
     pointDisplacement_.correctBoundaryConditions();
-}
 
-
-Foam::scalar Foam::dcpRBFMotionSolver::boundaryError
-(
-    const dcprbf::Values& d
-) const
-{
-    const dcprbf::Values s(interpolant_.evaluate(boundaryPoints_.points()));
     scalar err = 0;
     forAll(boundaryPoints_.moving(), i)
     {
-        if (boundaryPoints_.moving()[i])
-        {
-            err = max(err, (s.row(i) - d.row(i)).norm());
-        }
+        if (boundaryPoints_.moving()[i]) err = max(err, error.row(i).norm());
     }
     const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
     return dMax > 0 ? err/dMax : 0;
 }
 
 
-void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r) const
+void Foam::dcpRBFMotionSolver::guardQuality
+(
+    const dcprbf::Values& d,
+    dcpRBFStepLog::record& r
+)
 {
-    const vectorField& disp = pointDisplacement_.primitiveField();
-    const pointField p(points0() + disp);
-    const scalar tol = 1e-12*mesh().bounds().mag();
-    const labelList cells(quality_.movedCells(disp, tol));
-    const scalarField q(quality_.compute(cells, points0(), p));
+    const scalar floor = settings_.qualityFloor();
+    for (label iter = 0; ; ++iter)
+    {
+        const pointField p(points0() + pointDisplacement_.primitiveField());
+        const dcpRBFQualityRegion::summary q(region_.measure(points0(), p, 1));
+        r.nMovedCells = q.nCells;
+        r.minQuality = q.minQuality;
+        r.meanQuality = q.meanQuality;
 
-    r.nMovedCells = returnReduce(cells.size(), sumOp<label>());
-    r.minQuality = r.nMovedCells ? gMin(q) : 1;
-    r.meanQuality = r.nMovedCells ? gSum(q)/r.nMovedCells : 1;
-    const label nInverted = returnReduce(label(std::count_if(q.begin(), q.end(), [](scalar x) { return x <= 0; })), sumOp<label>());
+        if (q.minQuality >= floor || q.worst.empty())
+        {
+            break;
+        }
+        if (iter >= settings_.guardIterations() || !controlPoints_.addNear(q.worst[0]))
+        {
+            const word t(mesh().time().timeName());
+            if (settings_.onFloorFailure() == dcpRBFSettings::floorAction::stop)
+            {
+                FatalErrorInFunction
+                    << "Time " << t << ": minimum cell quality " << q.minQuality
+                    << " below qualityFloor " << floor << " after " << iter
+                    << " guard additions (" << q.nInverted << " inverted"
+                    << " cells). Stopping (qualityFloorAction stop)."
+                    << exit(FatalError);
+            }
+            WarningInFunction
+                << "Time " << t << ": minimum cell quality " << q.minQuality
+                << " below qualityFloor " << floor << " after " << iter
+                << " guard additions; continuing (qualityFloorAction warn)"
+                << endl;
+            break;
+        }
+        ++r.nAdded;
+        controlPoints_.solve(d);
+        r.boundaryError = interpolateDisplacement(d);
+    }
+
+    const pointField p(points0() + pointDisplacement_.primitiveField());
+    const label nInverted = region_.measure(points0(), p, 0).nInverted;
     if (nInverted)
     {
         WarningInFunction
             << "Time " << mesh().time().timeName() << ": " << nInverted
             << " inverted or degenerate cells (quality <= 0, minimum "
             << r.minQuality << "). The mesh is invalid: reduce the motion"
-            << " per step or enlarge supportRadius." << endl;
+            << " per step, enlarge supportRadius or use selection dynamic"
+            << " with a qualityFloor." << endl;
     }
 }
 
 
+void Foam::dcpRBFMotionSolver::writeControlPoints(const dcprbf::Values& d) const
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const Time& t = mesh().time();
+    const fileName dir(t.rootPath()/t.globalCaseName()/"postProcessing"/"dcpRBF");
+    mkDir(dir);
+    OFstream os(dir/"controlPoints_" + t.timeName() + ".vtk");
+    const std::vector<Eigen::Index>& idx = controlPoints_.set().indices();
+    os  << "# vtk DataFile Version 2.0" << nl
+        << "dcpRBF control points at time " << t.timeName() << nl
+        << "ASCII" << nl << "DATASET POLYDATA" << nl
+        << "POINTS " << idx.size() << " double" << nl;
+    for (const Eigen::Index i : idx)
+    {
+        const point x0(projection_.pointFromCore(boundaryPoints_.points().row(i).data()));
+        const point x(x0 + projection_.fromCore(d.row(i).data()));
+        os  << x.x() << ' ' << x.y() << ' ' << x.z() << nl;
+    }
+    os  << "VERTICES " << idx.size() << ' ' << 2*idx.size() << nl;
+    forAll(idx, k) os << "1 " << k << nl;
+    os  << "POINT_DATA " << idx.size() << nl
+        << "SCALARS moving int 1" << nl << "LOOKUP_TABLE default" << nl;
+    for (const Eigen::Index i : idx) os << int(boundaryPoints_.moving()[i]) << nl;
+    os  << "SCALARS age int 1" << nl << "LOOKUP_TABLE default" << nl;
+    for (const int a : controlPoints_.set().ages()) os << a << nl;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+#define dcpRBFMotionSolverMembers(points0Ref)                                  \
+    settings_(coeffDict(), mesh),                                              \
+    projection_(mesh),                                                         \
+    boundaryPoints_                                                            \
+    (                                                                          \
+        mesh, projection_, settings_.movingPatchIDs(),                         \
+        settings_.staticPatchIDs(), points0Ref                                 \
+    ),                                                                         \
+    evalPoints_(projection_.toCore(points0Ref)),                               \
+    controlPoints_(mesh, settings_, boundaryPoints_, projection_.dim()),       \
+    prescribed_(mesh.nPoints(), false),                                        \
+    onBoundary_(mesh.nPoints(), false),                                        \
+    region_                                                                    \
+    (                                                                          \
+        mesh, projection_, points0Ref, movingPoints(boundaryPoints_),          \
+        settings_.kernel().radius(), settings_.metric()                        \
+    ),                                                                         \
+    correction_(evalPoints_, boundaryPoints_, settings_.kernel().radius()),    \
+    log_(mesh.time())
 
 Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 (
@@ -169,25 +260,17 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 )
 :
     displacementMotionSolver(mesh, dict, typeName),
-    settings_(coeffDict(), mesh),
-    projection_(mesh),
-    boundaryPoints_
-    (
-        mesh,
-        projection_,
-        settings_.movingPatchIDs(),
-        settings_.staticPatchIDs(),
-        points0()
-    ),
-    evalPoints_(projection_.toCore(points0())),
-    interpolant_(settings_.kernel(), settings_.polynomial(), projection_.dim()),
-    prescribed_(mesh.nPoints(), false),
-    quality_(mesh),
-    log_(mesh.time())
+    dcpRBFMotionSolverMembers(points0())
 {
-    markPrescribedPoints();
+    markBoundaryPoints();
     warnUnlistedPatches();
-    setControlPoints();
+    Info<< typeName << ": " << boundaryPoints_.size() << " boundary points ("
+        << word(settings_.kernel().name()) << ", supportRadius "
+        << settings_.kernel().radius() << ", polynomial "
+        << Switch(settings_.polynomial()) << ", " << projection_.dim()
+        << "D, selection "
+        << dcpRBFSelectionSettings::modeNames[label(settings_.selection().selection)]
+        << "), " << region_.size() << " cells in reach" << endl;
 }
 
 
@@ -200,26 +283,13 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 )
 :
     displacementMotionSolver(mesh, dict, pointDisplacement, points0, typeName),
-    settings_(coeffDict(), mesh),
-    projection_(mesh),
-    boundaryPoints_
-    (
-        mesh,
-        projection_,
-        settings_.movingPatchIDs(),
-        settings_.staticPatchIDs(),
-        this->points0()
-    ),
-    evalPoints_(projection_.toCore(this->points0())),
-    interpolant_(settings_.kernel(), settings_.polynomial(), projection_.dim()),
-    prescribed_(mesh.nPoints(), false),
-    quality_(mesh),
-    log_(mesh.time())
+    dcpRBFMotionSolverMembers(this->points0())
 {
-    markPrescribedPoints();
+    markBoundaryPoints();
     warnUnlistedPatches();
-    setControlPoints();
 }
+
+#undef dcpRBFMotionSolverMembers
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -240,31 +310,54 @@ void Foam::dcpRBFMotionSolver::solve()
     clockTime timer;
     dcpRBFStepLog::record r;
 
-    // Boundary conditions: prescribed displacement into the point field
+    // 1. Dynamic swaps from the quality of the mesh as it is
+    if (controlPoints_.ready())
+    {
+        const dcpRBFQualityRegion::summary q
+        (
+            region_.measure(points0(), mesh().points(), settings_.selection().nSwap)
+        );
+        if (q.minQuality < 1 - 1e-12)
+        {
+            controlPoints_.swap(q, r.nAdded, r.nRemoved);
+        }
+    }
+
+    // 2. This step's boundary displacement; (re)selection
     pointDisplacement_.boundaryFieldRef().updateCoeffs();
     pointDisplacement_.correctBoundaryConditions();
-
     const dcprbf::Values d
     (
         boundaryPoints_.gather(pointDisplacement_.primitiveField())
     );
-    try
+    if (!controlPoints_.select(d))
     {
-        interpolant_.solve(d);
+        // Nothing moves yet: interior points stay put
+        vectorField& disp = pointDisplacement_.primitiveFieldRef();
+        forAll(disp, pointi)
+        {
+            if (!prescribed_[pointi]) disp[pointi] = Zero;
+        }
+        pointDisplacement_.correctBoundaryConditions();
+        log_.write(r);
+        return;
     }
-    catch (const dcprbf::Error& e)
-    {
-        FatalErrorInFunction
-            << "RBF solve failed: " << e.what() << exit(FatalError);
-    }
-    r.solveTime = timer.timeIncrement();
+    controlPoints_.solve(d);
+    r.nAdded += controlPoints_.reselect(d);
+    r.selectTime = timer.timeIncrement();
 
-    interpolateDisplacement();
+    // 3. Interpolate, snap the boundary, 4. guard the quality
+    r.boundaryError = interpolateDisplacement(d);
+    r.solveTime = timer.timeIncrement();
+    guardQuality(d, r);
     r.evalTime = timer.timeIncrement();
 
-    r.nControl = interpolant_.size();
-    r.boundaryError = boundaryError(d);
-    measureQuality(r);
+    r.nControl = controlPoints_.size();
+    controlPoints_.endStep();
+    if (mesh().time().writeTime())
+    {
+        writeControlPoints(d);
+    }
     log_.write(r);
 }
 

@@ -10,7 +10,8 @@ Foam::dcpRBFPlaneProjection::dcpRBFPlaneProjection(const polyMesh& mesh)
 :
     dim_(3),
     axes_({0, 1, 2}),
-    midPlane_(0)
+    midPlane_(0),
+    backPlane_(0)
 {
     if (mesh.nSolutionD() == 3)
     {
@@ -36,6 +37,7 @@ Foam::dcpRBFPlaneProjection::dcpRBFPlaneProjection(const polyMesh& mesh)
     dim_ = 2;
     const boundBox& bb = mesh.bounds();
     midPlane_ = 0.5*(bb.min()[axes_[2]] + bb.max()[axes_[2]]);
+    backPlane_ = bb.min()[axes_[2]];
 }
 
 

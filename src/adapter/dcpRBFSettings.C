@@ -3,13 +3,17 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFSettings.H"
+#include "dcpRBFDictReader.H"
 #include "dcpRBFVersion.H"
 #include "emptyPolyPatch.H"
 #include "wordRes.H"
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
 
-const Foam::wordList Foam::dcpRBFSettings::selectionNames({"all"});
+const Foam::wordList Foam::dcpRBFSettings::floorActionNames({"warn", "stop"});
+
+const Foam::wordList Foam::dcpRBFSettings::metricNames
+({"sizeShape", "size", "shape"});
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -63,25 +67,6 @@ Foam::labelList Foam::dcpRBFSettings::readPatches
 }
 
 
-void Foam::dcpRBFSettings::checkKeywords
-(
-    const dictionary& dict,
-    const wordList& known
-)
-{
-    for (const entry& e : dict)
-    {
-        if (!known.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown keyword " << e.keyword() << " in "
-                << dict.dictName() << ". Allowed keywords: " << known
-                << exit(FatalIOError);
-        }
-    }
-}
-
-
 void Foam::dcpRBFSettings::checkPatchLists
 (
     const dictionary& dict,
@@ -118,52 +103,54 @@ void Foam::dcpRBFSettings::checkPatchLists
 }
 
 
-bool Foam::dcpRBFSettings::readSwitch
+Foam::scalar Foam::dcpRBFSettings::readRadius
 (
     const dictionary& dict,
-    const word& keyword,
-    const bool deflt
-)
+    const polyMesh& mesh
+) const
 {
-    const entry* e = dict.findEntry(keyword, keyType::LITERAL);
-    if (!e)
+    ITstream& is = dict.lookup("supportRadius");
+    const scalar factor(readScalar(is));
+    scalar radius = factor;
+    if (!is.eof())
     {
-        return deflt;
+        const token t(is);
+        if (!t.isWord() || t.wordToken() != "movingExtent")
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword supportRadius: a length [m] or"
+                << " \"factor movingExtent\"; got " << t << " after "
+                << factor << ". Allowed unit word: movingExtent"
+                << exit(FatalIOError);
+        }
+        boundBox bb(boundBox::invertedBox);
+        for (const label patchi : movingPatchIDs_)
+        {
+            bb.add(mesh.boundaryMesh()[patchi].localPoints());
+        }
+        bb.reduce();
+        radius = factor*bb.mag();
     }
-    const token t(e->stream());
-    const Switch sw
-    (
-        t.isWord() ? Switch(t.wordToken(), true) : Switch(Switch::INVALID)
-    );
-    if (!t.isWord() || !sw.valid())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword " << keyword << " must be a switch; got " << t
-            << ". Allowed values: true/false, on/off, yes/no"
-            << exit(FatalIOError);
-    }
-    return bool(sw);
-}
-
-
-dcprbf::RadialKernel Foam::dcpRBFSettings::readKernel(const dictionary& dict)
-{
-    const word function(dict.getOrDefault<word>("function", "WendlandC2"));
-    const auto& names = dcprbf::RadialKernel::names();
-    if (std::find(names.begin(), names.end(), function) == names.end())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Unknown function " << function << ". Allowed functions: "
-            << wordList(names.begin(), names.end()) << exit(FatalIOError);
-    }
-    const scalar radius(dict.get<scalar>("supportRadius"));
     if (!(radius > 0))
     {
         FatalIOErrorInFunction(dict)
             << "Keyword supportRadius must be > 0 [m], got " << radius
             << exit(FatalIOError);
     }
-    return dcprbf::RadialKernel::fromName(function, radius);
+    return radius;
+}
+
+
+dcprbf::RadialKernel Foam::dcpRBFSettings::readKernel
+(
+    const dcpRBFDictReader& r,
+    const polyMesh& mesh
+) const
+{
+    const auto& n = dcprbf::RadialKernel::names();
+    const wordList names(n.begin(), n.end());
+    const label i = r.getChoice("function", names, "WendlandC2");
+    return dcprbf::RadialKernel::fromName(names[i], readRadius(r.dict(), mesh));
 }
 
 
@@ -177,18 +164,16 @@ Foam::dcpRBFSettings::dcpRBFSettings
 :
     movingPatchIDs_(readPatches(dict, "movingPatches", mesh.boundaryMesh(), false)),
     staticPatchIDs_(readPatches(dict, "staticPatches", mesh.boundaryMesh(), true)),
-    kernel_(readKernel(dict)),
-    polynomial_(readSwitch(dict, "polynomial", true)),
-    selection_(selectionMode::all)
+    kernel_(readKernel(dcpRBFDictReader(dict), mesh)),
+    polynomial_(dcpRBFDictReader(dict).getSwitch("polynomial", true))
 {
-    checkKeywords
-    (
-        dict,
-        {
-            "movingPatches", "staticPatches", "function", "supportRadius",
-            "polynomial", "controlPoints"
-        }
-    );
+    const dcpRBFDictReader r(dict);
+    r.checkKeywords
+    ({
+        "movingPatches", "staticPatches", "function", "supportRadius",
+        "polynomial", "controlPoints", "qualityMetric", "qualityFloor",
+        "qualityFloorAction", "guardIterations", "boundaryCorrection"
+    });
     checkPatchLists(dict, mesh.boundaryMesh());
 
     if (kernel_.needsPolynomial() && !polynomial_)
@@ -198,26 +183,26 @@ Foam::dcpRBFSettings::dcpRBFSettings
             << exit(FatalIOError);
     }
 
-    if (dict.found("controlPoints") && !dict.isDict("controlPoints"))
+    if (dict.found("controlPoints"))
     {
-        FatalIOErrorInFunction(dict)
-            << "Keyword controlPoints must be a sub-dictionary,"
-            << " e.g. controlPoints { selection all; }" << exit(FatalIOError);
-    }
-    if (dict.isDict("controlPoints"))
-    {
-        const dictionary& cpDict = dict.subDict("controlPoints");
-        checkKeywords(cpDict, {"selection"});
-        const word sel(cpDict.getOrDefault<word>("selection", "all"));
-        const label i = selectionNames.find(sel);
-        if (i < 0)
+        if (!dict.isDict("controlPoints"))
         {
-            FatalIOErrorInFunction(cpDict)
-                << "Unknown selection " << sel << ". Allowed selections: "
-                << selectionNames << exit(FatalIOError);
+            FatalIOErrorInFunction(dict)
+                << "Keyword controlPoints must be a sub-dictionary,"
+                << " e.g. controlPoints { selection dynamic; }"
+                << exit(FatalIOError);
         }
-        selection_ = selectionMode(i);
+        selection_ = dcpRBFSelectionSettings(dict.subDict("controlPoints"));
     }
+
+    metric_ = dcprbf::TetQuality::Metric
+    (
+        r.getChoice("qualityMetric", metricNames, "sizeShape")
+    );
+    qualityFloor_ = r.getScalar("qualityFloor", 0, -1, 1 - SMALL);
+    floorAction_ = floorAction(r.getChoice("qualityFloorAction", floorActionNames, "warn"));
+    guardIterations_ = r.getLabel("guardIterations", 5, 0, 1000);
+    boundaryCorrection_ = r.getSwitch("boundaryCorrection", true);
 }
 
 

@@ -1,0 +1,112 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF: radial-basis-function mesh motion with dynamic control points
+\*---------------------------------------------------------------------------*/
+
+#include "dcpRBFQualityRegion.H"
+#include "PointTree.hpp"
+#include "Pstream.H"
+
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
+(
+    const polyMesh& mesh,
+    const dcpRBFPlaneProjection& projection,
+    const pointField& points0,
+    const dcprbf::Points& movingPoints,
+    const scalar radius,
+    const dcprbf::TetQuality::Metric metric
+)
+:
+    quality_(mesh, metric)
+{
+    if (movingPoints.rows() == 0)
+    {
+        return;
+    }
+    const dcprbf::PointTree tree(movingPoints);
+    DynamicList<label> cells;
+    DynamicList<FixedList<scalar, 3>> centres;
+    forAll(mesh.cells(), celli)
+    {
+        // reference centre: average of the cell's points
+        const labelList& cp = mesh.cellPoints()[celli];
+        vector c(Zero);
+        for (const label pi : cp) c += points0[pi];
+        c /= cp.size();
+
+        FixedList<scalar, 3> x;
+        projection.toCore(c, x.data());
+        scalar d2 = 0;
+        tree.nearest(x.data(), d2);
+        if (d2 < sqr(radius))
+        {
+            cells.append(celli);
+            centres.append(x);
+        }
+    }
+    cells_.transfer(cells);
+    centres_.transfer(centres);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::dcpRBFQualityRegion::size() const
+{
+    return returnReduce(cells_.size(), sumOp<label>());
+}
+
+
+Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
+(
+    const pointField& points0,
+    const pointField& p,
+    const label n
+) const
+{
+    const scalarField q(quality_.compute(cells_, points0, p));
+
+    summary s;
+    s.nCells = size();
+    s.nInverted = returnReduce
+    (
+        label(std::count_if(q.begin(), q.end(), [](scalar x) { return x <= 0; })),
+        sumOp<label>()
+    );
+    s.minQuality = s.nCells ? gMin(q) : 1;
+    s.meanQuality = s.nCells ? gSum(q)/s.nCells : 1;
+
+    // Local candidates, then the global n worst and n best
+    List<rankedCell> ranked(q.size());
+    forAll(q, i)
+    {
+        ranked[i] = rankedCell({q[i], centres_[i][0], centres_[i][1], centres_[i][2]});
+    }
+    std::sort(ranked.begin(), ranked.end());
+    const label nLocal = min(n, ranked.size());
+
+    List<List<rankedCell>> worstAll(Pstream::nProcs()), bestAll(Pstream::nProcs());
+    worstAll[Pstream::myProcNo()] = SubList<rankedCell>(ranked, nLocal);
+    bestAll[Pstream::myProcNo()] =
+        SubList<rankedCell>(ranked, nLocal, ranked.size() - nLocal);
+    Pstream::gatherList(worstAll);
+    Pstream::scatterList(worstAll);
+    Pstream::gatherList(bestAll);
+    Pstream::scatterList(bestAll);
+
+    std::vector<rankedCell> worst, best;
+    for (const auto& l : worstAll) worst.insert(worst.end(), l.begin(), l.end());
+    for (const auto& l : bestAll) best.insert(best.end(), l.begin(), l.end());
+    std::sort(worst.begin(), worst.end());
+    std::sort(best.begin(), best.end(), [](const rankedCell& a, const rankedCell& b) { return b < a; });
+
+    s.worst = List<rankedCell>(worst.begin(), worst.begin() + min(n, label(worst.size())));
+    s.best = List<rankedCell>(best.begin(), best.begin() + min(n, label(best.size())));
+    return s;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,76 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF: radial-basis-function mesh motion with dynamic control points
+\*---------------------------------------------------------------------------*/
+
+#include "dcpRBFSelectionSettings.H"
+#include "dcpRBFDictReader.H"
+
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::dcpRBFSelectionSettings::modeNames
+({"all", "greedy", "dynamic"});
+
+const Foam::wordList Foam::dcpRBFSelectionSettings::targetNames
+({"displacement", "unit"});
+
+const Foam::wordList Foam::dcpRBFSelectionSettings::keywords
+({
+    "selection", "tolerance", "minPoints", "maxPoints", "doubleEdged",
+    "selectOn", "reselectTolerance", "nSwap", "protectSteps"
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
+{
+    const dcpRBFDictReader r(dict);
+    r.checkKeywords(keywords);
+
+    selection = mode(r.getChoice("selection", modeNames, "all"));
+    tolerance = r.getScalar("tolerance", 1e-3, 0, 1);
+    minPoints = r.getLabel("minPoints", 0, 0, labelMax);
+    maxPoints = r.getLabel("maxPoints", max(2000, minPoints), 1, labelMax);
+    if (minPoints > maxPoints)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword minPoints (" << minPoints << ") exceeds maxPoints ("
+            << maxPoints << ")" << exit(FatalIOError);
+    }
+    doubleEdged = r.getSwitch("doubleEdged", false);
+    selectOn = target(r.getChoice("selectOn", targetNames, "displacement"));
+    reselectTolerance =
+        r.getScalar("reselectTolerance", min(10*tolerance, 1.0), tolerance, GREAT);
+    nSwap = r.getLabel("nSwap", 1, 0, 1000);
+    protectSteps = r.getLabel("protectSteps", 3, 0, 1000000);
+
+    if (selection == mode::all)
+    {
+        for (const word& k : keywords)
+        {
+            if (k != "selection" && dict.found(k))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Keyword " << k << " has no effect with selection all."
+                    << " Allowed selections using it: greedy, dynamic"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+    if (selection != mode::dynamic)
+    {
+        for (const word k : {"nSwap", "protectSteps"})
+        {
+            if (dict.found(k))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Keyword " << k << " has no effect with selection "
+                    << modeNames[label(selection)] << ". It belongs to"
+                    << " selection dynamic" << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //
