@@ -46,6 +46,22 @@ std::vector<badInput> catalogue()
         {"ControlPointsNotDict", mv + st + r + "controlPoints all;", "controlPoints"},
         {"UnknownSelection", mv + st + r + "controlPoints { selection fancy; }", "selection"},
         {"UnknownControlPointsKeyword", mv + st + r + "controlPoints { selection all; nPoints 3; }", "nPoints"},
+        {"MinPointsAboveMaxPoints", mv + st + r + "controlPoints { selection greedy; minPoints 50; maxPoints 10; }", "minPoints"},
+        {"ZeroTolerance", mv + st + r + "controlPoints { selection greedy; tolerance 0; }", "tolerance"},
+        {"NegativeTolerance", mv + st + r + "controlPoints { selection dynamic; tolerance -1e-3; }", "tolerance"},
+        {"NegativeMaxPoints", mv + st + r + "controlPoints { selection greedy; maxPoints -5; }", "maxPoints"},
+        {"ReselectBelowTolerance", mv + st + r + "controlPoints { selection greedy; tolerance 0.01; reselectTolerance 0.001; }", "reselectTolerance"},
+        {"NSwapWithGreedy", mv + st + r + "controlPoints { selection greedy; nSwap 2; }", "nSwap"},
+        {"NegativeNSwap", mv + st + r + "controlPoints { selection dynamic; nSwap -1; }", "nSwap"},
+        {"ToleranceWithAll", mv + st + r + "controlPoints { selection all; tolerance 1e-3; }", "tolerance"},
+        {"UnknownSelectOn", mv + st + r + "controlPoints { selection greedy; selectOn velocity; }", "selectOn"},
+        {"UnknownQualityMetric", mv + st + r + "qualityMetric skewness;", "qualityMetric"},
+        {"QualityFloorAboveOne", mv + st + r + "qualityFloor 1.5;", "qualityFloor"},
+        {"UnknownFloorAction", mv + st + r + "qualityFloorAction ignore;", "qualityFloorAction"},
+        {"NegativeGuardIterations", mv + st + r + "guardIterations -2;", "guardIterations"},
+        {"RelativeRadiusUnknownUnit", mv + st + "supportRadius 3 chords;", "movingExtent"},
+        {"BoundaryCorrectionNotBool", mv + st + r + "boundaryCorrection sometimes;", "boundaryCorrection"},
+        {"MovingPatchRegexMatchesNothing", "movingPatches (\"wing.*\");" + st + r, "movingPatches"},
     };
 }
 

@@ -1,0 +1,100 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF tests: greedy and dynamic control points inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "testHelpers.H"
+
+#include <gtest/gtest.h>
+
+using namespace Foam;
+using namespace Foam::dcpRBFTest;
+
+namespace
+{
+
+//- A bump on the bottom wall of the unit box
+vector bump(const point& p)
+{
+    return vector(0, 0.1*std::sin(constant::mathematical::pi*p.x()), 0);
+}
+
+struct moved
+{
+    pointField p0, p;
+    label nControl;
+};
+
+moved run(label dim, const std::string& controlPoints, const std::string& extra = "")
+{
+    testCase c
+    (
+        dim, 10,
+        "movingPatches (bottom); staticPatches (top left right); supportRadius 0.8;"
+        " controlPoints { " + controlPoints + " }" + extra
+    );
+    autoPtr<motionSolver> ms(select(c));
+    auto& solver = refCast<dcpRBFMotionSolver>(ms());
+    prescribe(solver.pointDisplacement(), "bottom", bump);
+    moved m{solver.points0(), ms->newPoints(), solver.controlPoints().size()};
+    return m;
+}
+
+TEST(Modes, GreedyUsesFewerPointsAndKeepsTheBoundaryExact)
+{
+    for (const label dim : {2, 3})
+    {
+        const moved all(run(dim, "selection all;"));
+        const moved greedy(run(dim, "selection greedy; tolerance 1e-2;"));
+        EXPECT_LE(greedy.nControl, 0.6*all.nControl) << dim << "D";
+        EXPECT_GE(greedy.nControl, dim + 1);
+
+        // every bottom point where prescribed, despite not all being control points
+        forAll(greedy.p0, i)
+        {
+            const point& x = greedy.p0[i];
+            if (x.y() == 0 && x.x() > 0 && x.x() < 1 && (dim == 2 || (x.z() > 0 && x.z() < 1)))
+            {
+                EXPECT_LT(mag(greedy.p[i] - (x + bump(x))), 1e-12) << dim << "D";
+            }
+        }
+        // and the volume close to the full RBF
+        EXPECT_LT(max(mag(greedy.p - all.p)), 0.02) << dim << "D";
+    }
+}
+
+TEST(Modes, GreedyToleranceControlsTheSetSize)
+{
+    const moved coarse(run(2, "selection greedy; tolerance 5e-2;"));
+    const moved fine(run(2, "selection greedy; tolerance 1e-4;"));
+    EXPECT_LT(coarse.nControl, fine.nControl);
+    const moved capped(run(2, "selection greedy; tolerance 1e-6; maxPoints 8;"));
+    EXPECT_EQ(capped.nControl, 8);
+}
+
+TEST(Modes, AffineMotionExactInEveryMode)
+{
+    // with the polynomial, any set reproduces an affine motion exactly
+    for (const char* sel : {"selection greedy;", "selection dynamic;"})
+    {
+        testCase c
+        (
+            2, 6,
+            std::string("movingPatches (left right bottom top); staticPatches ();"
+            " supportRadius 0.7; controlPoints { ") + sel + " }"
+        );
+        autoPtr<motionSolver> ms(select(c));
+        auto& solver = refCast<dcpRBFMotionSolver>(ms());
+        const auto f = [](const point& x) { return vector(0.2*x.y() + 0.1, -0.15*x.x(), 0); };
+        for (const word& n : {"left", "right", "bottom", "top"}) prescribe(solver.pointDisplacement(), n, f);
+        const pointField p0(solver.points0());
+        const pointField p(ms->newPoints());
+        EXPECT_LT(solver.controlPoints().size(), 20);
+        scalar err = 0;
+        forAll(p, i) err = max(err, mag(p[i] - p0[i] - f(p0[i])));
+        EXPECT_LT(err, 1e-10) << sel;
+    }
+}
+
+} // namespace
+
+// ************************************************************************* //
