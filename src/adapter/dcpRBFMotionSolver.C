@@ -67,8 +67,7 @@ void Foam::dcpRBFMotionSolver::warnUnlistedPatches() const
         (
             !settings_.movingPatchIDs().found(patchi)
          && !settings_.staticPatchIDs().found(patchi)
-         && !isA<emptyPolyPatch>(pp)
-         && !pp.coupled()
+         && !polyPatch::constraintType(pp.type())
         )
         {
             unlisted.append(pp.name());
@@ -79,7 +78,9 @@ void Foam::dcpRBFMotionSolver::warnUnlistedPatches() const
         WarningInFunction
             << "Patches in neither movingPatches nor staticPatches: "
             << unlisted << nl
-            << "    Their points move with the interpolated displacement."
+            << "    Their points move with the interpolated displacement"
+            << " (constraint patches such as symmetryPlane apply their own"
+            << " constraint and are not listed here)."
             << endl;
     }
 }

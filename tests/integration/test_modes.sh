@@ -86,3 +86,35 @@ test_dynamic2D_restartEqualsUninterrupted() {
     foamDictionary system/controlDict -entry writePrecision -set 17 > /dev/null
     restartEqualsUninterrupted
 }
+
+test_qualityFloorStop_fatalErrorWhenUnmet() {
+    modeRun3D "selection all;" || return 1
+    dynamicMeshDict "$(cubeCoeffs "selection all;") qualityFloor 0.99; qualityFloorAction stop;"
+    if moveDynamicMesh > log.moveDynamicMesh 2>&1
+    then
+        fail "moveDynamicMesh went on below the quality floor"
+    fi
+    grep -q "below qualityFloor 0.99" log.moveDynamicMesh || fail "error does not name qualityFloor"
+    grep -q "qualityFloorAction stop" log.moveDynamicMesh || fail "error does not name the action"
+}
+
+test_qualityGuard_addsPointsInStep() {
+    modeRun2D "selection greedy; tolerance 5e-2;" || return 1
+    dynamicMeshDict "$(airfoilCoeffs "selection greedy; tolerance 5e-2;") qualityFloor 0.6; guardIterations 3;"
+    run moveDynamicMesh || return 1
+    # some step added points in-step (column nAdded) and the floor shortfall is reported or met
+    awk '!/^#/ && $3 > 0 { found = 1 } END { exit !found }' postProcessing/dcpRBF/0/dcpRBF.dat \
+        || fail "the guard never added a point"
+    meshOkAtEveryTime
+}
+
+test_dcpRBFFvMesh_writesCellQuality() {
+    modeRun3D "selection dynamic;" || return 1
+    sed -i 's/^dynamicFvMesh .*/dynamicFvMesh dcpRBFFvMesh;\ndynamicFvMeshLibs ("libdcpRBF.so");/' constant/dynamicMeshDict
+    run moveDynamicMesh || return 1
+    grep -q "dcpRBFFvMesh: cell quality min" log.moveDynamicMesh || fail "no quality log line"
+    [ -f 1/cellQuality ] || fail "1/cellQuality not written"
+    # quality is 1 at rest and lower after the rotation
+    grep -q "cell quality min 1 mean 1, 0 inverted" log.moveDynamicMesh || fail "initial quality not 1"
+    tail -n 5 log.moveDynamicMesh | grep -q "End" || fail "did not end"
+}

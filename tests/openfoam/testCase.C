@@ -29,7 +29,8 @@ Foam::dcpRBFTest::testCase::testCase
 (
     label dim,
     label n,
-    const string& coeffs
+    const string& coeffs,
+    const word& frontBack
 )
 {
     char tmpl[] = "/tmp/dcpRBFTest-XXXXXX";
@@ -37,7 +38,7 @@ Foam::dcpRBFTest::testCase::testCase
 
     const scalar zMax = dim == 2 ? 0.1 : 1.0;
     const label nz = dim == 2 ? 1 : n;
-    const word frontType(dim == 2 ? "empty" : "wall");
+    const word frontType(dim == 2 ? "empty" : frontBack);
     OStringStream bm;
     bm  << "convertToMeters 1;\nvertices ("
         << "(0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 " << zMax << ") (1 0 " << zMax
@@ -74,7 +75,9 @@ Foam::dcpRBFTest::testCase::testCase
     );
     const string frontBC
     (
-        dim == 2 ? "{ type empty; }" : "{ type fixedValue; value uniform (0 0 0); }"
+        dim == 2 ? "{ type empty; }"
+      : frontBack == "wall" ? "{ type fixedValue; value uniform (0 0 0); }"
+      : "{ type " + frontBack + "; }"
     );
     write
     (

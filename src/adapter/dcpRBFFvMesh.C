@@ -1,0 +1,107 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF: radial-basis-function mesh motion with dynamic control points
+\*---------------------------------------------------------------------------*/
+
+#include "dcpRBFFvMesh.H"
+#include "dcpRBFDictReader.H"
+#include "dcpRBFSettings.H"
+#include "points0MotionSolver.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(dcpRBFFvMesh, 0);
+    addToRunTimeSelectionTable(dynamicFvMesh, dcpRBFFvMesh, IOobject);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+dcprbf::TetQuality::Metric readMetric(const Foam::dictionary& dict)
+{
+    const Foam::dictionary& coeffs = dict.optionalSubDict("dcpRBFFvMeshCoeffs");
+    if (&coeffs == &dict)
+    {
+        return dcprbf::TetQuality::Metric::sizeShape;
+    }
+    const Foam::dcpRBFDictReader r(coeffs);
+    r.checkKeywords({"qualityMetric"});
+    return dcprbf::TetQuality::Metric
+    (
+        r.getChoice("qualityMetric", Foam::dcpRBFSettings::metricNames, "sizeShape")
+    );
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+const Foam::pointField& Foam::dcpRBFFvMesh::referencePoints() const
+{
+    if (isA<points0MotionSolver>(motion()))
+    {
+        return refCast<const points0MotionSolver>(motion()).points0();
+    }
+    return initialPoints_;
+}
+
+
+void Foam::dcpRBFFvMesh::updateQuality()
+{
+    labelList all(nCells());
+    forAll(all, celli) all[celli] = celli;
+    cellQuality_.primitiveFieldRef() =
+        quality_.compute(all, referencePoints(), points());
+    cellQuality_.correctBoundaryConditions();
+
+    const scalarField& q = cellQuality_.primitiveField();
+    label nInverted = 0;
+    for (const scalar x : q) nInverted += (x <= 0);
+    reduce(nInverted, sumOp<label>());
+    Info<< typeName << ": cell quality min " << gMin(q) << " mean "
+        << gAverage(q) << ", " << nInverted << " inverted cells" << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFFvMesh::dcpRBFFvMesh(const IOobject& io)
+:
+    dynamicMotionSolverFvMesh(io),
+    initialPoints_(points()),
+    quality_(*this, readMetric(motion())),
+    cellQuality_
+    (
+        IOobject
+        (
+            "cellQuality",
+            time().timeName(),
+            *this,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        *this,
+        dimensionedScalar("one", dimless, 1.0)
+    )
+{
+    updateQuality();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::dcpRBFFvMesh::update()
+{
+    const bool changed = dynamicMotionSolverFvMesh::update();
+    updateQuality();
+    return changed;
+}
+
+
+// ************************************************************************* //
