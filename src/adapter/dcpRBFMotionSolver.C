@@ -151,10 +151,12 @@ void Foam::dcpRBFMotionSolver::guardQuality
 )
 {
     const scalar floor = settings_.qualityFloor();
+    const label nRanked = max(label(1), settings_.selection().nSwap);
     for (label iter = 0; ; ++iter)
     {
-        const pointField p(points0() + pointDisplacement_.primitiveField());
-        const dcpRBFQualityRegion::summary q(region_.measure(points0(), p, 1));
+        lastPoints_ = points0() + pointDisplacement_.primitiveField();
+        lastQuality_ = region_.measure(points0(), lastPoints_, nRanked);
+        const dcpRBFQualityRegion::summary& q = lastQuality_;
         r.nMovedCells = q.nCells;
         r.minQuality = q.minQuality;
         r.meanQuality = q.meanQuality;
@@ -187,17 +189,33 @@ void Foam::dcpRBFMotionSolver::guardQuality
         r.boundaryError = interpolateDisplacement(d);
     }
 
-    const pointField p(points0() + pointDisplacement_.primitiveField());
-    const label nInverted = region_.measure(points0(), p, 0).nInverted;
-    if (nInverted)
+    if (lastQuality_.nInverted)
     {
         WarningInFunction
-            << "Time " << mesh().time().timeName() << ": " << nInverted
-            << " inverted or degenerate cells (quality <= 0, minimum "
-            << r.minQuality << "). The mesh is invalid: reduce the motion"
-            << " per step, enlarge supportRadius or use selection dynamic"
-            << " with a qualityFloor." << endl;
+            << "Time " << mesh().time().timeName() << ": "
+            << lastQuality_.nInverted << " inverted or degenerate cells"
+            << " (quality <= 0, minimum " << r.minQuality << "). The mesh is"
+            << " invalid: reduce the motion per step, enlarge supportRadius"
+            << " or use selection dynamic with a qualityFloor." << endl;
     }
+}
+
+
+Foam::dcpRBFQualityRegion::summary Foam::dcpRBFMotionSolver::currentQuality()
+{
+    const pointField& p = mesh().points();
+    bool same = lastPoints_.size() == p.size();
+    for (label i = 0; same && i < p.size(); ++i)
+    {
+        same = (p[i] == lastPoints_[i]);
+    }
+    if (!returnReduce(same, andOp<bool>()))
+    {
+        lastQuality_ =
+            region_.measure(points0(), p, max(label(1), settings_.selection().nSwap));
+        lastPoints_ = p;
+    }
+    return lastQuality_;
 }
 
 
@@ -314,10 +332,7 @@ void Foam::dcpRBFMotionSolver::solve()
     // 1. Dynamic swaps from the quality of the mesh as it is
     if (controlPoints_.ready())
     {
-        const dcpRBFQualityRegion::summary q
-        (
-            region_.measure(points0(), mesh().points(), settings_.selection().nSwap)
-        );
+        const dcpRBFQualityRegion::summary q(currentQuality());
         if (q.minQuality < 1 - 1e-12)
         {
             controlPoints_.swap(q, r.nAdded, r.nRemoved);

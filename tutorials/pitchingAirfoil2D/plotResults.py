@@ -53,6 +53,15 @@ def time_dirs():
     return sorted(times)
 
 
+def read_vtk_points(path):
+    """Points of a legacy ASCII VTK file (dcpRBF control points)."""
+    with open(path) as f:
+        lines = f.read().split("\n")
+    start = next(i for i, l in enumerate(lines) if l.startswith("POINTS"))
+    n = int(lines[start].split()[1])
+    return [tuple(map(float, l.split())) for l in lines[start + 1:start + 1 + n]]
+
+
 def plot_mesh(faces):
     angle = {t: AMPLITUDE*math.sin(OMEGA*t) for t, _ in time_dirs()}
     up = max(angle, key=angle.get)
@@ -66,11 +75,18 @@ def plot_mesh(faces):
     for ax, (t, path) in zip(axes, shots):
         ax.add_collection(LineCollection(front_edges(read_points(path), faces),
                                          linewidths=0.4, colors="k"))
+        vtk = "postProcessing/dcpRBF/controlPoints_%g.vtk" % t
+        if os.path.exists(vtk):
+            cp = read_vtk_points(vtk)
+            ax.plot([p[0] for p in cp], [p[1] for p in cp], "o", color="tab:red",
+                    markersize=3, label="%d control points" % len(cp))
+            ax.legend(loc="upper right", fontsize=8)
         ax.set_xlim(-0.6, 1.6)
         ax.set_ylim(-0.8, 0.8)
         ax.set_aspect("equal")
         ax.set_title("t = %g s, pitch %+.1f deg" % (t, math.degrees(angle.get(t, 0))))
-    fig.suptitle("dcpRBF: NACA0012 pitching +-25 deg about the quarter chord")
+    fig.suptitle("dcpRBF (dynamic control points): NACA0012 pitching +-25 deg"
+                 " about the quarter chord")
     fig.tight_layout()
     fig.savefig("images/mesh.png", dpi=110)
 
