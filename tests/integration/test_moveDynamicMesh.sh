@@ -1,43 +1,38 @@
 # Integration tests: moveDynamicMesh with dcpRBF on a 2D and a 3D case.
 # Each test runs in its own empty folder (see lib.sh: runTest).
 
-# pointDisplacement for the airfoil: pitching amplitude $1 [rad], reached at t = 1
-airfoilPointDisplacement() {
+# pitchingPointDisplacement PATCH AXIS ORIGIN AMPLITUDE STATIC EXTRA:
+# PATCH rotates about AXIS through ORIGIN by AMPLITUDE sin(pi t/2) [rad]
+# (the full amplitude at t = 1); STATIC patches (regex) are fixed; EXTRA is
+# added to boundaryField (e.g. the empty patches)
+pitchingPointDisplacement() {
     writeFile 0/pointDisplacement pointVectorField <<EOT
 dimensions [0 1 0 0 0 0 0];
 internalField uniform (0 0 0);
 boundaryField
 {
-    wing
+    $1
     {
         type angularOscillatingDisplacement;
-        axis (0 0 -1); origin (0.25 0 0); angle0 0;
-        amplitude $1; omega 1.5707963267948966;
+        axis $2; origin $3; angle0 0;
+        amplitude $4; omega 1.5707963267948966;
         value uniform (0 0 0);
     }
-    "(inlet|outlet|topAndBottom)" { type fixedValue; value uniform (0 0 0); }
-    frontAndBack { type empty; }
+    "$5" { type fixedValue; value uniform (0 0 0); }
+    $6
 }
 EOT
 }
 
+# pointDisplacement for the airfoil: pitching amplitude $1 [rad], reached at t = 1
+airfoilPointDisplacement() {
+    pitchingPointDisplacement wing "(0 0 -1)" "(0.25 0 0)" "$1" \
+        "(inlet|outlet|topAndBottom)" "frontAndBack { type empty; }"
+}
+
 # pointDisplacement for the hollow cube: rotation about (1 1 1) by up to $1 [rad] at t = 1
 hollowCubeRotation() {
-    writeFile 0/pointDisplacement pointVectorField <<EOT
-dimensions [0 1 0 0 0 0 0];
-internalField uniform (0 0 0);
-boundaryField
-{
-    body
-    {
-        type angularOscillatingDisplacement;
-        axis (1 1 1); origin (0 0 0); angle0 0;
-        amplitude $1; omega 1.5707963267948966;
-        value uniform (0 0 0);
-    }
-    outer { type fixedValue; value uniform (0 0 0); }
-}
-EOT
+    pitchingPointDisplacement body "(1 1 1)" "(0 0 0)" "$1" outer ""
 }
 
 # dynamicMeshDict with dcpRBFCoeffs body $1
@@ -86,7 +81,8 @@ test_airfoil2D_pimpleFoam_runs() {
     meshOkAtEveryTime
 }
 
-test_badFunction_fatalIOErrorFromTheUtility() {
+# staticHollowCube: a coarse hollow cube with every patch fixed
+staticHollowCube() {
     write_hollowCube . 2
     run blockMesh || return 1
     writeFile 0/pointDisplacement pointVectorField <<'EOT'
@@ -94,6 +90,10 @@ dimensions [0 1 0 0 0 0 0];
 internalField uniform (0 0 0);
 boundaryField { ".*" { type fixedValue; value uniform (0 0 0); } }
 EOT
+}
+
+test_badFunction_fatalIOErrorFromTheUtility() {
+    staticHollowCube || return 1
     dynamicMeshDict "movingPatches (body); staticPatches (outer); function cubicSpline; supportRadius 1;"
     if moveDynamicMesh > log.moveDynamicMesh 2>&1
     then
@@ -105,13 +105,7 @@ EOT
 }
 
 test_unlistedPatch_warns() {
-    write_hollowCube . 2
-    run blockMesh || return 1
-    writeFile 0/pointDisplacement pointVectorField <<'EOT'
-dimensions [0 1 0 0 0 0 0];
-internalField uniform (0 0 0);
-boundaryField { ".*" { type fixedValue; value uniform (0 0 0); } }
-EOT
+    staticHollowCube || return 1
     dynamicMeshDict "movingPatches (body); staticPatches (); supportRadius 1;"
     foamDictionary system/controlDict -entry endTime -set 0.1 > /dev/null
     run moveDynamicMesh || return 1
