@@ -95,6 +95,58 @@ TEST(Modes, AffineMotionExactInEveryMode)
     }
 }
 
+TEST(Modes, SelectOnUnitSelectsBeforeAnyMotion)
+{
+    testCase c
+    (
+        2, 10,
+        "movingPatches (bottom); staticPatches (top left right); supportRadius 0.8;"
+        " controlPoints { selection greedy; selectOn unit; tolerance 1e-2; }"
+    );
+    autoPtr<motionSolver> ms(select(c));
+    auto& solver = refCast<dcpRBFMotionSolver>(ms());
+    EXPECT_FALSE(solver.controlPoints().ready());
+    const pointField p(ms->newPoints());   // zero displacement
+    EXPECT_TRUE(solver.controlPoints().ready());
+    EXPECT_LT(solver.controlPoints().size(), 40);
+    EXPECT_LT(max(mag(p - solver.points0())), 1e-12);
+}
+
+TEST(Modes, BoundaryCorrectionBlendsTheErrorIntoTheVolume)
+{
+    // a coarse set (large boundary error) so the correction radius
+    // 10 max|e| spans interior points
+    const std::string greedy("selection greedy; tolerance 0.3; reselectTolerance 0.5;");
+    const moved with(run(2, greedy));
+    const moved without(run(2, greedy, " boundaryCorrection false;"));
+    const moved all(run(2, "selection all;"));
+    EXPECT_EQ(with.nControl, without.nControl);
+    // the correction changes points near the boundary, towards full RBF
+    scalar changed = 0, errWith = 0, errWithout = 0;
+    forAll(with.p, i)
+    {
+        changed = max(changed, mag(with.p[i] - without.p[i]));
+        errWith += mag(with.p[i] - all.p[i]);
+        errWithout += mag(without.p[i] - all.p[i]);
+    }
+    EXPECT_GT(changed, 1e-6);
+    EXPECT_LT(errWith, errWithout);
+}
+
+TEST(Modes, SupportRadiusRelativeToTheMovingExtent)
+{
+    testCase c
+    (
+        2, 4,
+        "movingPatches (bottom); staticPatches (top left right);"
+        " supportRadius 2 movingExtent;"
+    );
+    autoPtr<motionSolver> ms(select(c));
+    const auto& solver = refCast<dcpRBFMotionSolver>(ms());
+    // bottom patch: x in [0, 1], y = 0, z in [0, 0.1]
+    EXPECT_NEAR(solver.settings().kernel().radius(), 2*Foam::sqrt(1 + 0.01), 1e-12);
+}
+
 } // namespace
 
 // ************************************************************************* //
