@@ -4,6 +4,9 @@
 #include "IncrementalSaddleSolver.hpp"
 #include "Timing.hpp"
 
+#include <Eigen/LU>
+
+#include <algorithm>
 #include <cstdio>
 #include <random>
 
@@ -17,6 +20,23 @@ namespace
 double relDiff(const Values& a, const Values& b)
 {
     return (a - b).cwiseAbs().maxCoeff()/b.cwiseAbs().maxCoeff();
+}
+
+//- 1/rcond of the saddle matrix [Phi P; P^T 0] (LU estimate): differences
+//  between two backward-stable solves scale with it
+double conditionEstimate
+(
+    const RadialKernel& k,
+    const LinearPolynomial& frame,
+    const Points& c
+)
+{
+    const Eigen::Index n = c.rows(), m = frame.size();
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + m, n + m);
+    A.topLeftCorner(n, n) = AugmentedKernel(k, frame).radialMatrix(c, c);
+    A.topRightCorner(n, m) = frame.basis(c);
+    A.bottomLeftCorner(m, n) = frame.basis(c).transpose();
+    return 1.0/Eigen::PartialPivLU<Eigen::MatrixXd>(A).rcond();
 }
 }
 
@@ -37,8 +57,8 @@ void benchmarkUpdates(const Setup& s)
         "\n## Dynamic update at N = %ld: one add + one remove vs refactorization\n\n"
         "| kernel | refactorization (s) | add + remove, random index (s) |"
         " ratio | add + remove of index 0 (s) | ratio | solve (s) |"
-        " max rel. diff vs fresh solve after %d pairs |\n"
-        "|---|---|---|---|---|---|---|---|\n",
+        " max rel. diff vs fresh solve after %d pairs | cond. estimate |\n"
+        "|---|---|---|---|---|---|---|---|---|\n",
         long(n), s.updatePairs
     );
     for (const RadialKernel& k : s.kernels)
@@ -46,7 +66,10 @@ void benchmarkUpdates(const Setup& s)
         IncrementalSaddleSolver solver(k, frame);
         const double tReset = minSeconds(3, [&] { solver.reset(c); });
 
+        // add a random unused surface point, remove a random centre (or the
+        // first one, the most expensive deletion)
         std::mt19937 gen(11);
+        std::shuffle(pool.begin(), pool.end(), gen);
         std::size_t next = 0;
         auto pair = [&](bool first)
         {
@@ -74,9 +97,10 @@ void benchmarkUpdates(const Setup& s)
 
         std::printf
         (
-            "| %s | %.4f | %.5f | %.1f %% | %.5f | %.1f %% | %.5f | %.1e |\n",
+            "| %s | %.4f | %.5f | %.1f %% | %.5f | %.1f %% | %.5f | %.1e | %.1e |\n",
             k.name().c_str(), tReset, tPair, 100*tPair/tReset, tWorst,
-            100*tWorst/tReset, tSolve, relDiff(alpha, alphaRef)
+            100*tWorst/tReset, tSolve, relDiff(alpha, alphaRef),
+            conditionEstimate(k, frame, solver.centres())
         );
     }
 }

@@ -10,12 +10,17 @@
 // formula allows it (TPS, Gaussian, IMQ) and the Wendland functions are written
 // without branches, (1 - xi)_+ = (a + |a|)/2 with a = 1 - xi (exact in floating
 // point), so that loops over them vectorize (std::max or a conditional here
-// make GCC's SSE2 code two times slower).
+// make GCC's SSE2 code two times slower). The array overloads
+// ofSquared(r2, w) evaluate a whole block with Eigen's packet math (its
+// SIMD sqrt, log and exp set no errno and vectorize without -ffast-math):
+// 2x faster than the scalar loop for the Wendland functions with SSE2,
+// 2-4x for every kernel with AVX.
 #pragma once
 
 #include "Types.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,6 +47,12 @@ struct WendlandC0
         return a*a;
     }
     double ofSquared(double r2) const { return (*this)(std::sqrt(r2)); }
+    template<class Arr> void ofSquared(const Arr& r2, Arr& w) const
+    {
+        const Arr xi = r2.sqrt()*invR;
+        const Arr a = (1 - xi).max(0.0);
+        w = a.square();
+    }
 };
 
 //- Wendland C2: phi(xi) = (1 - xi)_+^4 (4 xi + 1), compact, PD in R^3.
@@ -57,6 +68,12 @@ struct WendlandC2
         return a2*a2*(4*xi + 1);
     }
     double ofSquared(double r2) const { return (*this)(std::sqrt(r2)); }
+    template<class Arr> void ofSquared(const Arr& r2, Arr& w) const
+    {
+        const Arr xi = r2.sqrt()*invR;
+        const Arr a = (1 - xi).max(0.0);
+        w = a.square().square()*(4*xi + 1);
+    }
 };
 
 //- Wendland C4: phi(xi) = (1 - xi)_+^6 (35/3 xi^2 + 6 xi + 1), compact, PD in R^3.
@@ -72,6 +89,12 @@ struct WendlandC4
         return a3*a3*((35.0/3.0)*xi*xi + 6*xi + 1);
     }
     double ofSquared(double r2) const { return (*this)(std::sqrt(r2)); }
+    template<class Arr> void ofSquared(const Arr& r2, Arr& w) const
+    {
+        const Arr xi = r2.sqrt()*invR;
+        const Arr a = (1 - xi).max(0.0);
+        w = (a*a*a).square()*(((35.0/3.0)*xi + 6)*xi + 1);
+    }
 };
 
 //- Wendland C6: phi(xi) = (1 - xi)_+^8 (32 xi^3 + 25 xi^2 + 8 xi + 1),
@@ -89,6 +112,12 @@ struct WendlandC6
         return a4*a4*(((32*xi + 25)*xi + 8)*xi + 1);
     }
     double ofSquared(double r2) const { return (*this)(std::sqrt(r2)); }
+    template<class Arr> void ofSquared(const Arr& r2, Arr& w) const
+    {
+        const Arr xi = r2.sqrt()*invR;
+        const Arr a = (1 - xi).max(0.0);
+        w = a.square().square().square()*(((32*xi + 25)*xi + 8)*xi + 1);
+    }
 };
 
 //- Thin-plate spline: phi(xi) = xi^2 ln(xi), global, conditionally positive
@@ -108,6 +137,12 @@ struct ThinPlateSpline
         const double xi2 = r2*invR*invR;
         return xi2 > 0 ? 0.5*xi2*std::log(xi2) : 0.0;
     }
+    template<class Arr> void ofSquared(const Arr& r2, Arr& w) const
+    {
+        const Arr xi2 = r2*(invR*invR);
+        // xi2 log(max(xi2, tiny)) is 0 at xi2 = 0 (no 0 log 0 = NaN)
+        w = 0.5*xi2*xi2.max(std::numeric_limits<double>::min()).log();
+    }
 };
 
 //- Gaussian: phi(xi) = exp(-xi^2), global, PD.
@@ -121,6 +156,10 @@ struct Gaussian
         return std::exp(-xi*xi);
     }
     double ofSquared(double r2) const { return std::exp(-r2*invR*invR); }
+    template<class Arr> void ofSquared(const Arr& r2, Arr& w) const
+    {
+        w = (-(r2*(invR*invR))).exp();
+    }
 };
 
 //- Inverse multiquadric: phi(xi) = 1/sqrt(1 + xi^2), global, PD.
@@ -136,6 +175,10 @@ struct InverseMultiquadric
     double ofSquared(double r2) const
     {
         return 1.0/std::sqrt(1 + r2*invR*invR);
+    }
+    template<class Arr> void ofSquared(const Arr& r2, Arr& w) const
+    {
+        w = (1 + r2*(invR*invR)).sqrt().inverse();
     }
 };
 

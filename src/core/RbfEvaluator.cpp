@@ -52,13 +52,13 @@ void RbfEvaluator::assign
     alpha_ = alpha;
     beta_ = beta;
 
+    cx_ = centres.col(0);
+    cy_ = centres.col(1);
+    cz_ = centres.col(2);
+    ax_ = alpha.col(0);
+    ay_ = alpha.col(1);
+    az_ = alpha.col(2);
     const std::size_t n = centres.rows();
-    for (auto* v : {&cx_, &cy_, &cz_, &ax_, &ay_, &az_}) v->resize(n);
-    for (std::size_t j = 0; j < n; ++j)
-    {
-        cx_[j] = centres(j, 0); cy_[j] = centres(j, 1); cz_[j] = centres(j, 2);
-        ax_[j] = alpha(j, 0); ay_[j] = alpha(j, 1); az_[j] = alpha(j, 2);
-    }
     tree_.reset(kernel_.compact() && n > 0 ? new PointTree(centres_) : nullptr);
 }
 
@@ -144,14 +144,9 @@ void RbfEvaluator::evaluateTree(const double* x, std::size_t n, double* out) con
 
 void RbfEvaluator::evaluateDense(const double* x, std::size_t n, double* out) const
 {
+    using Block = Eigen::Array<double, Eigen::Dynamic, 1, 0, centreBlock, 1>;
     const std::ptrdiff_t nc = size();
     const std::ptrdiff_t nBlocks = (std::ptrdiff_t(n) + pointBlock - 1)/pointBlock;
-    const double* cx = cx_.data();
-    const double* cy = cy_.data();
-    const double* cz = cz_.data();
-    const double* ax = ax_.data();
-    const double* ay = ay_.data();
-    const double* az = az_.data();
 
     kernel_.visit([&](const auto& phi)
     {
@@ -161,28 +156,26 @@ void RbfEvaluator::evaluateDense(const double* x, std::size_t n, double* out) co
             const std::ptrdiff_t i0 = b*pointBlock;
             const std::ptrdiff_t i1 = std::min<std::ptrdiff_t>(n, i0 + pointBlock);
             double acc[3*pointBlock] = {};
+            Block r2, w;
             for (std::ptrdiff_t j0 = 0; j0 < nc; j0 += centreBlock)
             {
-                const std::ptrdiff_t j1 = std::min(nc, j0 + centreBlock);
+                const std::ptrdiff_t len = std::min(nc - j0, centreBlock);
+                const auto cx = cx_.segment(j0, len);
+                const auto cy = cy_.segment(j0, len);
+                const auto cz = cz_.segment(j0, len);
+                const auto ax = ax_.segment(j0, len);
+                const auto ay = ay_.segment(j0, len);
+                const auto az = az_.segment(j0, len);
                 for (std::ptrdiff_t i = i0; i < i1; ++i)
                 {
-                    const double x0 = x[3*i], x1 = x[3*i + 1], x2 = x[3*i + 2];
-                    double s0 = 0, s1 = 0, s2 = 0;
-                    #pragma omp simd reduction(+:s0, s1, s2)
-                    for (std::ptrdiff_t j = j0; j < j1; ++j)
-                    {
-                        const double d0 = x0 - cx[j];
-                        const double d1 = x1 - cy[j];
-                        const double d2 = x2 - cz[j];
-                        const double w = phi.ofSquared(d0*d0 + d1*d1 + d2*d2);
-                        s0 += w*ax[j];
-                        s1 += w*ay[j];
-                        s2 += w*az[j];
-                    }
+                    const double* xi = x + 3*i;
+                    r2 = (cx - xi[0]).square() + (cy - xi[1]).square()
+                       + (cz - xi[2]).square();
+                    phi.ofSquared(r2, w);
                     double* ai = acc + 3*(i - i0);
-                    ai[0] += s0;
-                    ai[1] += s1;
-                    ai[2] += s2;
+                    ai[0] += (w*ax).sum();
+                    ai[1] += (w*ay).sum();
+                    ai[2] += (w*az).sum();
                 }
             }
             for (std::ptrdiff_t i = i0; i < i1; ++i)

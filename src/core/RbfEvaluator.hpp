@@ -7,8 +7,8 @@
 //    ~ (centres within R) + a tree descent.
 //  - Dense: every centre, in blocks (64 points x 1024 centres, the centres and
 //    weights copied into separate x/y/z arrays) so that a block of centres
-//    stays in L1/L2 while 64 points use it and the inner loop vectorizes
-//    (`omp simd`, kernels evaluated from r^2 without branches, see
+//    stays in L1/L2 while 64 points use it; per point and block the kernel
+//    values are one Eigen array expression (vectorized sqrt/log/exp, see
 //    RadialKernel.hpp). Global kernels always use it.
 //  - Auto (default): Tree for compact kernels unless a sample of 64 of the
 //    query points sees more than 40 % of the centres on average, where the
@@ -29,7 +29,6 @@
 #include "RadialKernel.hpp"
 
 #include <memory>
-#include <vector>
 
 namespace dcprbf
 {
@@ -89,7 +88,7 @@ private:
     Eigen::MatrixX3d beta_;
 
     // Dense path: centres and weights, one array per component
-    std::vector<double> cx_, cy_, cz_, ax_, ay_, az_;
+    Eigen::ArrayXd cx_, cy_, cz_, ax_, ay_, az_;
 
     // Tree path (compact kernels)
     std::unique_ptr<PointTree> tree_;
