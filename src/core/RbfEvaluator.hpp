@@ -11,7 +11,7 @@
 //    values are one Eigen array expression (vectorized sqrt/log/exp, see
 //    RadialKernel.hpp). Global kernels always use it.
 //  - Auto (default): Tree for compact kernels unless a sample of 64 of the
-//    query points sees more than 40 % of the centres on average, where the
+//    query points sees more than 30 % of the centres on average, where the
 //    tree costs more than it saves (large support radius).
 //
 // Reuse between steps: when the control set changes by a few points, every
