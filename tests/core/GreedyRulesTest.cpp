@@ -54,6 +54,17 @@ TEST(GreedyRules, AffineMotionStopsAtTheSeed)
     EXPECT_GT(n.selected.size(), 10u);
 }
 
+TEST(GreedyRules, ZeroDisplacementGivesTheSeedAndZeroCoefficients)
+{
+    const Points x = randomPoints(100, 3, 80);
+    const GreedyResult r = make(options(1e-3, 0, 50)).select(x, Values::Zero(100, 3));
+    EXPECT_EQ(r.selected.size(), 4u);
+    EXPECT_TRUE(r.converged);
+    EXPECT_EQ(r.maxDisplacement, 0.0);
+    EXPECT_EQ(r.alpha.cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(r.beta.cwiseAbs().maxCoeff(), 0.0);
+}
+
 TEST(GreedyRules, MinPointsAndMaxPoints)
 {
     const Points x = randomPoints(300, 3, 72);
