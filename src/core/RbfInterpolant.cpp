@@ -65,6 +65,7 @@ Eigen::MatrixXd RbfInterpolant::kernelMatrix
 
 void RbfInterpolant::setCentres(const Points& centres)
 {
+    PointSetChecks::checkCoordinates(centres, dim_, "control point");
     PointSetChecks::checkControlSet
     (
         centres, LinearPolynomial::boundingBox(polynomial_, dim_, centres)

@@ -161,6 +161,15 @@ TEST(RbfInterpolantErrors, NonFiniteInput)
     Points bad = c;
     bad(3, 1) = std::nan("");
     EXPECT_THROW(s.setCentres(bad), Error);
+    try
+    {
+        s.setCentres(bad);
+    }
+    catch (const Error& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("control point coordinates"),
+                  std::string::npos) << e.what();
+    }
     s.setCentres(c);
     Values v = smoothField(c);
     v(0, 0) = std::numeric_limits<double>::infinity();
