@@ -10,6 +10,10 @@
 #include "OFstream.H"
 #include "OSspecific.H"
 
+#ifdef _OPENMP
+    #include <omp.h>
+#endif
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -83,6 +87,22 @@ void Foam::dcpRBFMotionSolver::warnUnlistedPatches() const
             << " constraint and are not listed here)."
             << endl;
     }
+}
+
+
+void Foam::dcpRBFMotionSolver::setThreads() const
+{
+    #ifdef _OPENMP
+    // MPI ranks x OpenMP threads beyond the cores slows everything down
+    // several times: one thread per rank unless the user says otherwise
+    if (Pstream::parRun() && getEnv("OMP_NUM_THREADS").empty())
+    {
+        omp_set_num_threads(1);
+    }
+    Info<< typeName << ": " << omp_get_max_threads() << " OpenMP thread(s)"
+        << (Pstream::parRun() ? " per processor" : "")
+        << " (set OMP_NUM_THREADS to change)" << endl;
+    #endif
 }
 
 
@@ -281,6 +301,7 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
     displacementMotionSolver(mesh, dict, typeName),
     dcpRBFMotionSolverMembers(points0())
 {
+    setThreads();
     markBoundaryPoints();
     warnUnlistedPatches();
     Info<< typeName << ": " << boundaryPoints_.size() << " boundary points ("
@@ -304,6 +325,7 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
     displacementMotionSolver(mesh, dict, pointDisplacement, points0, typeName),
     dcpRBFMotionSolverMembers(this->points0())
 {
+    setThreads();
     markBoundaryPoints();
     warnUnlistedPatches();
 }
