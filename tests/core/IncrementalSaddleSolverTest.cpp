@@ -2,6 +2,7 @@
 // sequence of add/remove/replace the coefficients equal a fresh solve of the
 // same set; every guard.
 #include "IncrementalSaddleSolver.hpp"
+#include "KernelCases.hpp"
 #include "TestPoints.hpp"
 
 #include <gtest/gtest.h>
@@ -17,7 +18,7 @@ namespace
 {
 
 // kernel name x polynomial x dimension
-using Case = std::tuple<std::string, bool, int>;
+using Case = test::KernelCase;
 
 class IncrementalCase : public ::testing::TestWithParam<Case>
 {
@@ -119,31 +120,12 @@ TEST_P(IncrementalCase, ExactAtCentresAfterUpdates)
     }
 }
 
-std::vector<Case> allCases()
-{
-    std::vector<Case> cases;
-    for (const auto& name : RadialKernel::names())
-    {
-        for (bool poly : {false, true})
-        {
-            if (name == "TPS" && !poly) continue;
-            for (int dim : {2, 3}) cases.emplace_back(name, poly, dim);
-        }
-    }
-    return cases;
-}
-
 INSTANTIATE_TEST_SUITE_P
 (
     KernelsPolyDim,
     IncrementalCase,
-    ::testing::ValuesIn(allCases()),
-    [](const ::testing::TestParamInfo<Case>& info)
-    {
-        return std::get<0>(info.param)
-            + (std::get<1>(info.param) ? "_poly" : "_noPoly")
-            + "_" + std::to_string(std::get<2>(info.param)) + "D";
-    }
+    ::testing::ValuesIn(test::kernelCases()),
+    test::kernelCaseName
 );
 
 

@@ -1,6 +1,7 @@
 // Unit tests of RbfInterpolant and SaddleSolver: exactness, polynomial
 // reproduction, and every error path.
 #include "RbfInterpolant.hpp"
+#include "KernelCases.hpp"
 #include "TestPoints.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,7 @@ namespace
 {
 
 // kernel name x polynomial x dimension
-using Case = std::tuple<std::string, bool, int>;
+using Case = test::KernelCase;
 
 class InterpolantCase : public ::testing::TestWithParam<Case>
 {
@@ -73,32 +74,12 @@ TEST_P(InterpolantCase, CompactKernelIsZeroOutsideSupport)
     EXPECT_EQ(s.evaluate(far).cwiseAbs().maxCoeff(), 0.0);
 }
 
-//- Every kernel x polynomial x dimension, but TPS only with the polynomial
-std::vector<Case> validCases()
-{
-    std::vector<Case> cases;
-    for (const auto& name : RadialKernel::names())
-    {
-        for (bool poly : {false, true})
-        {
-            if (name == "TPS" && !poly) continue;
-            for (int dim : {2, 3}) cases.emplace_back(name, poly, dim);
-        }
-    }
-    return cases;
-}
-
 INSTANTIATE_TEST_SUITE_P
 (
     KernelsPolyDim,
     InterpolantCase,
-    ::testing::ValuesIn(validCases()),
-    [](const ::testing::TestParamInfo<Case>& info)
-    {
-        return std::get<0>(info.param)
-            + (std::get<1>(info.param) ? "_poly" : "_noPoly")
-            + "_" + std::to_string(std::get<2>(info.param)) + "D";
-    }
+    ::testing::ValuesIn(test::kernelCases()),
+    test::kernelCaseName
 );
 
 

@@ -1,0 +1,45 @@
+// The kernel x polynomial x dimension parameters shared by the core's
+// parameterised tests: every kernel, with and without the polynomial (TPS
+// only with it), in 2D and 3D.
+#pragma once
+
+#include "RadialKernel.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace dcprbf
+{
+namespace test
+{
+
+//- kernel name, polynomial, dimension
+using KernelCase = std::tuple<std::string, bool, int>;
+
+inline std::vector<KernelCase> kernelCases()
+{
+    std::vector<KernelCase> cases;
+    for (const auto& name : RadialKernel::names())
+    {
+        for (bool poly : {false, true})
+        {
+            if (name == "TPS" && !poly) continue;
+            for (int dim : {2, 3}) cases.emplace_back(name, poly, dim);
+        }
+    }
+    return cases;
+}
+
+//- Test names such as WendlandC2_poly_3D
+inline std::string kernelCaseName(const ::testing::TestParamInfo<KernelCase>& info)
+{
+    return std::get<0>(info.param)
+        + (std::get<1>(info.param) ? "_poly" : "_noPoly")
+        + "_" + std::to_string(std::get<2>(info.param)) + "D";
+}
+
+} // namespace test
+} // namespace dcprbf
