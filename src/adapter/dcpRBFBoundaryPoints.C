@@ -4,6 +4,7 @@
 
 #include "dcpRBFBoundaryPoints.H"
 #include "Pstream.H"
+#include "syncTools.H"
 
 #include <algorithm>
 #include <numeric>
@@ -24,43 +25,35 @@ Foam::List<Foam::List<Type>> Foam::dcpRBFBoundaryPoints::allGather
 }
 
 
-void Foam::dcpRBFBoundaryPoints::collectLocal
+void Foam::dcpRBFBoundaryPoints::markPoints
 (
     const polyMesh& mesh,
     const labelList& movingPatchIDs,
-    const labelList& staticPatchIDs,
-    const pointField& points0
+    const labelList& staticPatchIDs
 )
 {
-    // 0: not a candidate, 1: static, 2: moving (moving wins)
-    labelList kind(mesh.nPoints(), 0);
+    labelList kind(mesh.nPoints(), label(interiorPoint));
     for (const label patchi : staticPatchIDs)
     {
         for (const label pointi : mesh.boundaryMesh()[patchi].meshPoints())
         {
-            kind[pointi] = 1;
+            kind[pointi] = staticPoint;
         }
     }
     for (const label patchi : movingPatchIDs)
     {
         for (const label pointi : mesh.boundaryMesh()[patchi].meshPoints())
         {
-            kind[pointi] = 2;
+            kind[pointi] = movingPoint;
         }
     }
-
-    DynamicList<label> labels;
-    DynamicList<bool> moving;
+    // A processor may hold a patch point without any of the patch's faces
+    syncTools::syncPointList(mesh, kind, maxEqOp<label>(), label(interiorPoint));
+    kind_.setSize(kind.size());
     forAll(kind, pointi)
     {
-        if (kind[pointi] && projection_.isControlCandidate(points0[pointi]))
-        {
-            labels.append(pointi);
-            moving.append(kind[pointi] == 2);
-        }
+        kind_[pointi] = pointKind(kind[pointi]);
     }
-    localPoints_.transfer(labels);
-    localMoving_.transfer(moving);
 }
 
 
@@ -77,17 +70,28 @@ Foam::dcpRBFBoundaryPoints::dcpRBFBoundaryPoints
 :
     projection_(projection)
 {
-    collectLocal(mesh, movingPatchIDs, staticPatchIDs, points0);
+    markPoints(mesh, movingPatchIDs, staticPatchIDs);
+    DynamicList<label> labels;
+    DynamicList<bool> localMoving;
+    forAll(kind_, pointi)
+    {
+        if (kind_[pointi] != interiorPoint && projection_.isControlCandidate(points0[pointi]))
+        {
+            labels.append(pointi);
+            localMoving.append(kind_[pointi] == movingPoint);
+        }
+    }
+    localPoints_.transfer(labels);
 
     // All processors' candidates, concatenated in processor order
     const List<List<point>> allPoints
     (
         allGather<point>(pointField(points0, localPoints_))
     );
-    const List<List<bool>> allMoving(allGather<bool>(localMoving_));
+    const List<List<bool>> allMoving(allGather<bool>(localMoving));
 
     DynamicList<FixedList<double, 3>> coords;
-    DynamicList<bool> moving;
+    DynamicList<bool> isMoving;
     forAll(allPoints, proci)
     {
         forAll(allPoints[proci], i)
@@ -95,7 +99,7 @@ Foam::dcpRBFBoundaryPoints::dcpRBFBoundaryPoints
             FixedList<double, 3> c;
             projection_.toCore(allPoints[proci][i], c.data());
             coords.append(c);
-            moving.append(allMoving[proci][i]);
+            isMoving.append(allMoving[proci][i]);
         }
     }
 
@@ -131,24 +135,36 @@ Foam::dcpRBFBoundaryPoints::dcpRBFBoundaryPoints
     }
     forAll(concatToGlobal_, k)
     {
-        moving_[concatToGlobal_[k]] = moving_[concatToGlobal_[k]] || moving[k];
+        moving_[concatToGlobal_[k]] = moving_[concatToGlobal_[k]] || isMoving[k];
     }
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+dcprbf::Points Foam::dcpRBFBoundaryPoints::movingPoints() const
+{
+    dcprbf::Points p(std::count(moving_.begin(), moving_.end(), true), 3);
+    Eigen::Index n = 0;
+    forAll(moving_, i)
+    {
+        if (moving_[i]) p.row(n++) = points_.row(i);
+    }
+    return p;
+}
+
+
 dcprbf::Values Foam::dcpRBFBoundaryPoints::gather
 (
-    const pointField& pointDisplacement
+    const pointField& prescribed
 ) const
 {
     vectorField local(localPoints_.size(), Zero);
     forAll(localPoints_, i)
     {
-        if (localMoving_[i])
+        if (kind_[localPoints_[i]] == movingPoint)
         {
-            local[i] = pointDisplacement[localPoints_[i]];
+            local[i] = prescribed[localPoints_[i]];
         }
     }
     const List<List<vector>> all(allGather<vector>(local));

@@ -83,28 +83,4 @@ Foam::scalarField Foam::dcpRBFCellQuality::compute
 }
 
 
-Foam::labelList Foam::dcpRBFCellQuality::movedCells
-(
-    const vectorField& displacement,
-    const scalar tol
-) const
-{
-    const labelListList& pointCells = mesh_.pointCells();
-    boolList moved(mesh_.nCells(), false);
-    forAll(displacement, pointi)
-    {
-        if (magSqr(displacement[pointi]) > sqr(tol))
-        {
-            for (const label celli : pointCells[pointi]) moved[celli] = true;
-        }
-    }
-    DynamicList<label> cells(mesh_.nCells()/4);
-    forAll(moved, celli)
-    {
-        if (moved[celli]) cells.append(celli);
-    }
-    return labelList(std::move(cells));
-}
-
-
 // ************************************************************************* //

@@ -34,10 +34,7 @@ dcprbf::DynamicControlSet::Options setOptions(const Foam::dcpRBFSelectionSetting
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-std::vector<Eigen::Index> Foam::dcpRBFControlPoints::greedy
-(
-    const dcprbf::Values& d
-) const
+void Foam::dcpRBFControlPoints::greedy(const dcprbf::Values& d)
 {
     const dcpRBFSelectionSettings& s = settings_.selection();
     dcprbf::Values target(d);
@@ -59,12 +56,15 @@ std::vector<Eigen::Index> Foam::dcpRBFControlPoints::greedy
     o.maxPoints = s.maxPoints;
     o.doubleEdged = s.doubleEdged;
     const dcprbf::GreedySelector g(settings_.kernel(), settings_.polynomial(), dim_, o);
-    const dcprbf::GreedyResult r(g.select(boundary_.points(), target));
+    dcprbf::GreedyResult r(g.select(boundary_.points(), target));
     Info<< "dcpRBF: greedy selection of " << r.selected.size() << " of "
         << boundary_.size() << " boundary points, relative error "
         << r.historyError.back() << (r.converged ? "" : " (tolerance not met)")
         << endl;
-    return r.selected;
+    // The greedy's factorization is taken over (same candidates, frame and
+    // kernel): no O(N^3) refactorization
+    set_.reset(r.selected, std::move(*r.factorization));
+    updated_ = true;
 }
 
 
@@ -126,7 +126,10 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
         dim,
         setOptions(settings.selection())
     ),
+    time_(mesh.time()),
     ready_(false),
+    updated_(false),
+    warnedMaxPoints_(false),
     state_
     (
         IOobject
@@ -177,7 +180,7 @@ bool Foam::dcpRBFControlPoints::select(const dcprbf::Values& d)
     }
     try
     {
-        set_.reset(greedy(d));
+        greedy(d);
     }
     catch (const dcprbf::Error& e)
     {
@@ -226,16 +229,34 @@ Foam::scalar Foam::dcpRBFControlPoints::boundaryError
 }
 
 
-Foam::label Foam::dcpRBFControlPoints::reselect(const dcprbf::Values& d)
+bool Foam::dcpRBFControlPoints::swapping() const
 {
+    return settings_.selection().selection == dcpRBFSelectionSettings::mode::dynamic;
+}
+
+
+Foam::label Foam::dcpRBFControlPoints::reselect
+(
+    const dcprbf::Values& d,
+    bool& atMaxPoints
+)
+{
+    atMaxPoints = false;
     if (settings_.selection().selection == dcpRBFSelectionSettings::mode::all)
     {
         return 0;
     }
+    const scalar tol = settings_.selection().reselectTolerance;
     label nAdded = 0;
     label worst = -1;
-    while (boundaryError(d, worst) > settings_.selection().reselectTolerance)
+    scalar err = 0;
+    while ((err = boundaryError(d, worst)) > tol)
     {
+        if (set_.size() >= settings_.selection().maxPoints)
+        {
+            atMaxPoints = true;
+            break;
+        }
         try
         {
             if (worst < 0 || set_.contains(worst) || !set_.add(worst)) break;
@@ -245,7 +266,20 @@ Foam::label Foam::dcpRBFControlPoints::reselect(const dcprbf::Values& d)
             break;   // numerically dependent: the error is round-off level
         }
         ++nAdded;
+        updated_ = true;
         solve(d);
+    }
+    if (atMaxPoints && !warnedMaxPoints_)
+    {
+        warnedMaxPoints_ = true;
+        WarningInFunction
+            << "Time " << time_.timeName() << ": " << set_.size()
+            << " control points (maxPoints) and the moving-boundary error "
+            << err << " is still above reselectTolerance " << tol << nl
+            << "    The boundary is reproduced less accurately than asked;"
+            << " raise controlPoints/maxPoints or reselectTolerance. Steps"
+            << " where this holds are marked in the log line and dcpRBF.dat;"
+            << " this warning is given once." << endl;
     }
     return nAdded;
 }
@@ -272,7 +306,11 @@ void Foam::dcpRBFControlPoints::swap
     for (label k = 0; k < min(n, q.best.size()); ++k)
     {
         const Eigen::RowVector3d x(q.best[k][1], q.best[k][2], q.best[k][3]);
-        if (set_.removeNearest(x) >= 0) ++nRemoved;
+        if (set_.removeNearest(x) >= 0)
+        {
+            ++nRemoved;
+            updated_ = true;
+        }
     }
 }
 
@@ -283,13 +321,23 @@ bool Foam::dcpRBFControlPoints::addNear
 )
 {
     const Eigen::RowVector3d x(cell[1], cell[2], cell[3]);
-    return set_.addNearest(x) >= 0;
+    if (set_.addNearest(x) < 0)
+    {
+        return false;
+    }
+    updated_ = true;
+    return true;
 }
 
 
 void Foam::dcpRBFControlPoints::endStep()
 {
     set_.nextStep();
+    if (updated_ && time_.writeTime())
+    {
+        set_.refactorize();
+        updated_ = false;
+    }
     storeState();
 }
 

@@ -6,6 +6,13 @@
 #include "dcpRBFVersion.H"
 #include "addToRunTimeSelectionTable.H"
 #include "emptyPolyPatch.H"
+#include "wedgePolyPatch.H"
+#include "processorPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
+#include "valuePointPatchField.H"
+#include "pointConstraints.H"
+#include "syncTools.H"
+#include "twoDPointCorrector.H"
 #include "clockTime.H"
 #include "OFstream.H"
 #include "OSspecific.H"
@@ -36,41 +43,48 @@ namespace Foam
 }
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- Moving boundary points (core coordinates)
-dcprbf::Points movingPoints(const Foam::dcpRBFBoundaryPoints& b)
-{
-    Foam::label n = 0;
-    for (const bool m : b.moving()) n += m;
-    dcprbf::Points p(n, 3);
-    n = 0;
-    forAll(b.moving(), i)
-    {
-        if (b.moving()[i]) p.row(n++) = b.points().row(i);
-    }
-    return p;
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::dcpRBFMotionSolver::warnUnlistedPatches() const
+void Foam::dcpRBFMotionSolver::checkPatches() const
 {
     const polyBoundaryMesh& patches = mesh().boundaryMesh();
+    const pointVectorField::Boundary& bf = pointDisplacement_.boundaryField();
     wordList unlisted;
     forAll(patches, patchi)
     {
         const polyPatch& pp = patches[patchi];
         if
         (
-            !settings_.movingPatchIDs().found(patchi)
-         && !settings_.staticPatchIDs().found(patchi)
+            pp.coupled()
+         && (!isA<processorPolyPatch>(pp) || isA<processorCyclicPolyPatch>(pp))
+        )
+        {
+            FatalErrorInFunction
+                << "Patch " << pp.name() << " is of type " << pp.type()
+                << ": dcpRBF does not move the points of coupled patches"
+                << " (cyclic, cyclicAMI, ...) consistently on both sides."
+                << " Use a mesh without periodic patches, or another motion"
+                << " solver" << exit(FatalError);
+        }
+        if (settings_.movingPatchIDs().found(patchi))
+        {
+            if (!bf[patchi].fixesValue())
+            {
+                FatalIOErrorInFunction(coeffDict())
+                    << "Keyword movingPatches: patch " << pp.name() << " has"
+                    << " the pointDisplacement condition " << bf[patchi].type()
+                    << ", which does not prescribe the displacement: nothing"
+                    << " would move. Use a fixed-value condition"
+                    << " (fixedValue, angularOscillatingDisplacement,"
+                    << " solidBodyMotionDisplacement,"
+                    << " sixDoFRigidBodyDisplacement, surfaceDisplacement,"
+                    << " codedFixedValue, ...) or list the patch under"
+                    << " staticPatches" << exit(FatalIOError);
+            }
+        }
+        else if
+        (
+            !settings_.staticPatchIDs().found(patchi)
          && !polyPatch::constraintType(pp.type())
         )
         {
@@ -82,9 +96,9 @@ void Foam::dcpRBFMotionSolver::warnUnlistedPatches() const
         WarningInFunction
             << "Patches in neither movingPatches nor staticPatches: "
             << unlisted << nl
-            << "    Their points move with the interpolated displacement"
-            << " (constraint patches such as symmetryPlane apply their own"
-            << " constraint and are not listed here)."
+            << "    Their points move with the interpolated displacement,"
+            << " then their own pointDisplacement condition applies"
+            << " (constraint patches such as symmetryPlane are not listed)."
             << endl;
     }
 }
@@ -106,24 +120,52 @@ void Foam::dcpRBFMotionSolver::setThreads() const
 }
 
 
-void Foam::dcpRBFMotionSolver::markBoundaryPoints()
+void Foam::dcpRBFMotionSolver::readPrescribed()
 {
-    const polyBoundaryMesh& patches = mesh().boundaryMesh();
-    for (const label patchi : settings_.staticPatchIDs())
-    {
-        for (const label pointi : patches[patchi].meshPoints())
-        {
-            onBoundary_[pointi] = true;
-        }
-    }
+    // The only evaluation of the conditions this step: constrain() and the
+    // final constrainDisplacement() insert the values without re-evaluating
+    pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
+    bf.updateCoeffs();
+
+    prescribed_.setSize(mesh().nPoints());
+    prescribed_ = Zero;
     for (const label patchi : settings_.movingPatchIDs())
     {
-        for (const label pointi : patches[patchi].meshPoints())
+        // fixesValue() was checked at construction (checkPatches)
+        bf[patchi].setInInternalField
+        (
+            prescribed_,
+            refCast<const valuePointPatchField<vector>>(bf[patchi])
+        );
+    }
+    // Points of a moving patch held by a processor without its faces
+    syncTools::syncPointList
+    (
+        mesh(), prescribed_, maxMagSqrEqOp<vector>(), vector::zero
+    );
+}
+
+
+void Foam::dcpRBFMotionSolver::constrain()
+{
+    pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
+    forAll(bf, patchi)
+    {
+        if (!bf[patchi].fixesValue())
         {
-            onBoundary_[pointi] = true;
-            prescribed_[pointi] = true;
+            bf[patchi].evaluate();
         }
     }
+    const pointConstraints& pcs = pointConstraints::New(pointDisplacement_.mesh());
+    pointConstraints::syncUntransformedData
+    (
+        mesh(), pointDisplacement_.primitiveFieldRef(), maxMagSqrEqOp<vector>()
+    );
+    pcs.constrainCorners(pointDisplacement_);
+    twoDPointCorrector::New(mesh()).correctDisplacement
+    (
+        mesh().points(), pointDisplacement_.primitiveFieldRef()
+    );
 }
 
 
@@ -137,22 +179,24 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     s.evaluate(evalPoints_.data(), evalPoints_.rows(), v.data());
 
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    boolList onBoundary(disp.size());
     forAll(disp, pointi)
     {
-        if (!prescribed_[pointi])
-        {
-            disp[pointi] =
-                onBoundary_[pointi] ? Zero : projection_.fromCore(v.row(pointi).data());
-        }
+        const auto kind = boundaryPoints_.kind(pointi);
+        onBoundary[pointi] = kind != dcpRBFBoundaryPoints::interiorPoint;
+        disp[pointi] =
+            kind == dcpRBFBoundaryPoints::interiorPoint
+          ? projection_.fromCore(v.row(pointi).data())
+          : prescribed_[pointi];
     }
 
     // Error at the boundary points, blended into the volume
     const dcprbf::Values error(d - s.evaluate(boundaryPoints_.points()));
     if (settings_.boundaryCorrection())
     {
-        correction_.apply(error, onBoundary_, projection_, disp);
+        correction_.apply(error, onBoundary, projection_, disp);
     }
-    pointDisplacement_.correctBoundaryConditions();
+    constrain();
 
     scalar err = 0;
     forAll(boundaryPoints_.moving(), i)
@@ -175,9 +219,10 @@ void Foam::dcpRBFMotionSolver::guardQuality
     for (label iter = 0; ; ++iter)
     {
         lastPoints_ = points0() + pointDisplacement_.primitiveField();
+        twoDCorrectPoints(lastPoints_);
         lastQuality_ = region_.measure(points0(), lastPoints_, nRanked);
         const dcpRBFQualityRegion::summary& q = lastQuality_;
-        r.nMovedCells = q.nCells;
+        r.nCells = q.nCells;
         r.minQuality = q.minQuality;
         r.meanQuality = q.meanQuality;
 
@@ -204,7 +249,7 @@ void Foam::dcpRBFMotionSolver::guardQuality
                 << endl;
             break;
         }
-        ++r.nAdded;
+        ++r.nGuard;
         controlPoints_.solve(d);
         r.boundaryError = interpolateDisplacement(d);
     }
@@ -221,7 +266,8 @@ void Foam::dcpRBFMotionSolver::guardQuality
 }
 
 
-Foam::dcpRBFQualityRegion::summary Foam::dcpRBFMotionSolver::currentQuality()
+const Foam::dcpRBFQualityRegion::summary&
+Foam::dcpRBFMotionSolver::currentQuality()
 {
     const pointField& p = mesh().points();
     bool same = lastPoints_.size() == p.size();
@@ -261,7 +307,7 @@ void Foam::dcpRBFMotionSolver::writeControlPoints(const dcprbf::Values& d) const
         os  << x.x() << ' ' << x.y() << ' ' << x.z() << nl;
     }
     os  << "VERTICES " << idx.size() << ' ' << 2*idx.size() << nl;
-    forAll(idx, k) os << "1 " << k << nl;
+    for (std::size_t k = 0; k < idx.size(); ++k) os << "1 " << k << nl;
     os  << "POINT_DATA " << idx.size() << nl
         << "SCALARS moving int 1" << nl << "LOOKUP_TABLE default" << nl;
     for (const Eigen::Index i : idx) os << int(boundaryPoints_.moving()[i]) << nl;
@@ -272,38 +318,10 @@ void Foam::dcpRBFMotionSolver::writeControlPoints(const dcprbf::Values& d) const
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-#define dcpRBFMotionSolverMembers(points0Ref)                                  \
-    settings_(coeffDict(), mesh),                                              \
-    projection_(mesh),                                                         \
-    boundaryPoints_                                                            \
-    (                                                                          \
-        mesh, projection_, settings_.movingPatchIDs(),                         \
-        settings_.staticPatchIDs(), points0Ref                                 \
-    ),                                                                         \
-    evalPoints_(projection_.toCore(points0Ref)),                               \
-    controlPoints_(mesh, settings_, boundaryPoints_, projection_.dim()),       \
-    prescribed_(mesh.nPoints(), false),                                        \
-    onBoundary_(mesh.nPoints(), false),                                        \
-    region_                                                                    \
-    (                                                                          \
-        mesh, projection_, points0Ref, movingPoints(boundaryPoints_),          \
-        settings_.kernel().radius(), settings_.metric()                        \
-    ),                                                                         \
-    correction_(evalPoints_, boundaryPoints_, settings_.kernel().radius()),    \
-    log_(mesh.time())
-
-Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
-(
-    const polyMesh& mesh,
-    const IOdictionary& dict
-)
-:
-    displacementMotionSolver(mesh, dict, typeName),
-    dcpRBFMotionSolverMembers(points0())
+void Foam::dcpRBFMotionSolver::initialise()
 {
     setThreads();
-    markBoundaryPoints();
-    warnUnlistedPatches();
+    checkPatches();
     Info<< typeName << ": " << boundaryPoints_.size() << " boundary points ("
         << word(settings_.kernel().name()) << ", supportRadius "
         << settings_.kernel().radius() << ", polynomial "
@@ -317,20 +335,27 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 (
     const polyMesh& mesh,
+    const IOdictionary& dict
+)
+:
+    displacementMotionSolver(mesh, dict, typeName)
+{
+    initialise();
+}
+
+
+Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
+(
+    const polyMesh& mesh,
     const IOdictionary& dict,
     const pointVectorField& pointDisplacement,
     const pointIOField& points0
 )
 :
-    displacementMotionSolver(mesh, dict, pointDisplacement, points0, typeName),
-    dcpRBFMotionSolverMembers(this->points0())
+    displacementMotionSolver(mesh, dict, pointDisplacement, points0, typeName)
 {
-    setThreads();
-    markBoundaryPoints();
-    warnUnlistedPatches();
+    initialise();
 }
-
-#undef dcpRBFMotionSolverMembers
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -352,50 +377,49 @@ void Foam::dcpRBFMotionSolver::solve()
     dcpRBFStepLog::record r;
 
     // 1. Dynamic swaps from the quality of the mesh as it is
-    if (controlPoints_.ready())
+    if (controlPoints_.ready() && controlPoints_.swapping())
     {
-        const dcpRBFQualityRegion::summary q(currentQuality());
+        const dcpRBFQualityRegion::summary& q = currentQuality();
         if (q.minQuality < 1 - 1e-12)
         {
             controlPoints_.swap(q, r.nAdded, r.nRemoved);
         }
     }
+    r.swapTime = timer.timeIncrement();
 
-    // 2. This step's boundary displacement; (re)selection
-    pointDisplacement_.boundaryFieldRef().updateCoeffs();
-    pointDisplacement_.correctBoundaryConditions();
-    const dcprbf::Values d
-    (
-        boundaryPoints_.gather(pointDisplacement_.primitiveField())
-    );
-    if (!controlPoints_.select(d))
+    // 2. This step's boundary displacement (one evaluation of the
+    //    conditions); (re)selection
+    readPrescribed();
+    const dcprbf::Values d(boundaryPoints_.gather(prescribed_));
+    if (controlPoints_.select(d))
     {
-        // Nothing moves yet: interior points stay put
-        vectorField& disp = pointDisplacement_.primitiveFieldRef();
-        forAll(disp, pointi)
+        controlPoints_.solve(d);
+        r.nAdded += controlPoints_.reselect(d, r.atMaxPoints);
+        r.selectTime = timer.timeIncrement();
+
+        // 3. Interpolate, snap the boundary, 4. guard the quality
+        r.boundaryError = interpolateDisplacement(d);
+        r.interpolateTime = timer.timeIncrement();
+        guardQuality(d, r);
+        r.guardTime = timer.timeIncrement();
+
+        r.nControl = controlPoints_.size();
+        controlPoints_.endStep();
+        if (mesh().time().writeTime())
         {
-            if (!prescribed_[pointi]) disp[pointi] = Zero;
+            writeControlPoints(d);
         }
-        pointDisplacement_.correctBoundaryConditions();
-        log_.write(r);
-        return;
     }
-    controlPoints_.solve(d);
-    r.nAdded += controlPoints_.reselect(d);
-    r.selectTime = timer.timeIncrement();
-
-    // 3. Interpolate, snap the boundary, 4. guard the quality
-    r.boundaryError = interpolateDisplacement(d);
-    r.solveTime = timer.timeIncrement();
-    guardQuality(d, r);
-    r.evalTime = timer.timeIncrement();
-
-    r.nControl = controlPoints_.size();
-    controlPoints_.endStep();
-    if (mesh().time().writeTime())
+    else
     {
-        writeControlPoints(d);
+        // Nothing moves yet: every point but the moving ones stays put
+        pointDisplacement_.primitiveFieldRef() = prescribed_;
     }
+
+    // The fixed-value conditions' values inserted (not re-evaluated), the
+    // constraints applied, as OpenFOAM's own displacement solvers do
+    pointConstraints::New(pointDisplacement_.mesh())
+        .constrainDisplacement(pointDisplacement_, false);
     log_.write(r);
 }
 

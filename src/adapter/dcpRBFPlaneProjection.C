@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFPlaneProjection.H"
+#include "wedgePolyPatch.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -13,6 +14,17 @@ Foam::dcpRBFPlaneProjection::dcpRBFPlaneProjection(const polyMesh& mesh)
     midPlane_(0),
     backPlane_(0)
 {
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (isA<wedgePolyPatch>(pp))
+        {
+            FatalErrorInFunction
+                << "Patch " << pp.name() << " is of type wedge: dcpRBF does"
+                << " not support axisymmetric (wedge) cases. Supported: 3D"
+                << " cases and 2D cases with one empty direction"
+                << exit(FatalError);
+        }
+    }
     if (mesh.nSolutionD() == 3)
     {
         return;

@@ -18,6 +18,21 @@ const Foam::wordList Foam::dcpRBFSettings::metricNames
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
+(
+    const dictionary& dict
+)
+{
+    dcpRBFDictReader(dict).checkKeywords
+    ({
+        "movingPatches", "staticPatches", "function", "supportRadius",
+        "polynomial", "controlPoints", "qualityMetric", "qualityFloor",
+        "qualityFloorAction", "guardIterations", "boundaryCorrection"
+    });
+    return dict;
+}
+
+
 Foam::labelList Foam::dcpRBFSettings::readPatches
 (
     const dictionary& dict,
@@ -162,18 +177,15 @@ Foam::dcpRBFSettings::dcpRBFSettings
     const polyMesh& mesh
 )
 :
-    movingPatchIDs_(readPatches(dict, "movingPatches", mesh.boundaryMesh(), false)),
+    movingPatchIDs_
+    (
+        readPatches(checkKeywords(dict), "movingPatches", mesh.boundaryMesh(), false)
+    ),
     staticPatchIDs_(readPatches(dict, "staticPatches", mesh.boundaryMesh(), true)),
     kernel_(readKernel(dcpRBFDictReader(dict), mesh)),
     polynomial_(dcpRBFDictReader(dict).getSwitch("polynomial", true))
 {
     const dcpRBFDictReader r(dict);
-    r.checkKeywords
-    ({
-        "movingPatches", "staticPatches", "function", "supportRadius",
-        "polynomial", "controlPoints", "qualityMetric", "qualityFloor",
-        "qualityFloorAction", "guardIterations", "boundaryCorrection"
-    });
     checkPatchLists(dict, mesh.boundaryMesh());
 
     if (kernel_.needsPolynomial() && !polynomial_)

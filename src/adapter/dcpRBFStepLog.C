@@ -19,11 +19,13 @@ Foam::dcpRBFStepLog::dcpRBFStepLog(const Time& runTime)
 void Foam::dcpRBFStepLog::write(const record& r)
 {
     Info<< "dcpRBF: control points " << r.nControl << " (+" << r.nAdded
-        << " -" << r.nRemoved << "), quality min " << r.minQuality
-        << " mean " << r.meanQuality << " (" << r.nMovedCells
-        << " moved cells), boundary error " << r.boundaryError
-        << ", time select " << r.selectTime << " solve " << r.solveTime
-        << " eval " << r.evalTime << " s" << endl;
+        << " -" << r.nRemoved << ", guard +" << r.nGuard << "), quality min "
+        << r.minQuality << " mean " << r.meanQuality << " (" << r.nCells
+        << " cells in reach), boundary error " << r.boundaryError
+        << (r.atMaxPoints ? " (at maxPoints)" : "")
+        << ", time swap " << r.swapTime << " select " << r.selectTime
+        << " interpolate " << r.interpolateTime << " guard " << r.guardTime
+        << " s" << endl;
 
     if (!Pstream::master())
     {
@@ -40,15 +42,17 @@ void Foam::dcpRBFStepLog::write(const record& r)
         file_.reset(new OFstream(dir/"dcpRBF.dat"));
         file_()
             << "# dcpRBF motion solver, one row per step" << nl
-            << "# time nControl nAdded nRemoved nMovedCells minQuality"
-            << " meanQuality boundaryError selectTime solveTime evalTime"
-            << endl;
+            << "# time nControl nAdded nRemoved nGuard nCells minQuality"
+            << " meanQuality boundaryError atMaxPoints swapTime selectTime"
+            << " interpolateTime guardTime" << endl;
     }
     file_()
         << time_.timeName() << ' ' << r.nControl << ' ' << r.nAdded << ' '
-        << r.nRemoved << ' ' << r.nMovedCells << ' ' << r.minQuality << ' '
-        << r.meanQuality << ' ' << r.boundaryError << ' ' << r.selectTime
-        << ' ' << r.solveTime << ' ' << r.evalTime << endl;
+        << r.nRemoved << ' ' << r.nGuard << ' ' << r.nCells << ' '
+        << r.minQuality << ' ' << r.meanQuality << ' ' << r.boundaryError
+        << ' ' << label(r.atMaxPoints) << ' ' << r.swapTime << ' '
+        << r.selectTime << ' ' << r.interpolateTime << ' ' << r.guardTime
+        << endl;
 }
 
 

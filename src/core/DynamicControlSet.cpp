@@ -46,6 +46,42 @@ void DynamicControlSet::reset(const std::vector<Eigen::Index>& indices)
         c.row(k) = candidates_.row(indices[k]);
     }
     solver_.reset(c);
+    setIndices(indices);
+}
+
+
+void DynamicControlSet::reset
+(
+    const std::vector<Eigen::Index>& indices,
+    SaddleFactorization factorization
+)
+{
+    if (factorization.size() != Eigen::Index(indices.size()))
+    {
+        throw Error("control set: the factorization does not match the indices");
+    }
+    for (const Eigen::Index i : indices)
+    {
+        if (i < 0 || i >= candidates_.rows())
+        {
+            throw Error("control point index out of range");
+        }
+    }
+    solver_ = IncrementalSaddleSolver(std::move(factorization));
+    setIndices(indices);
+}
+
+
+void DynamicControlSet::refactorize()
+{
+    const std::vector<int> ages(age_);
+    reset(std::vector<Eigen::Index>(indices_));
+    age_ = ages;
+}
+
+
+void DynamicControlSet::setIndices(const std::vector<Eigen::Index>& indices)
+{
     indices_ = indices;
     std::fill(inSet_.begin(), inSet_.end(), 0);
     for (const Eigen::Index i : indices_) inSet_[i] = 1;

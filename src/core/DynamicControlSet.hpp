@@ -51,6 +51,20 @@ public:
     //- Start from these candidates (indices), O(N^3). Throws Error.
     void reset(const std::vector<Eigen::Index>& indices);
 
+    //- Start from these candidates with their factorization, built in the
+    //  same frame (e.g. by the GreedySelector on the same candidates): no
+    //  refactorization. Throws Error if the sizes do not match.
+    void reset
+    (
+        const std::vector<Eigen::Index>& indices,
+        SaddleFactorization factorization
+    );
+
+    //- Factorize the current set from scratch (same order, ages kept), as
+    //  reset(indices()) would: after it the state depends only on indices()
+    //  and not on the history of updates (exact restarts). O(N^3).
+    void refactorize();
+
     //- Candidate index of each centre, in the solver's order
     const std::vector<Eigen::Index>& indices() const { return indices_; }
 
@@ -84,6 +98,9 @@ public:
     const Points& candidates() const { return candidates_; }
 
 private:
+
+    //- Set the indices, membership flags and fresh ages
+    void setIndices(const std::vector<Eigen::Index>& indices);
     //- Candidates ordered by distance to x, keeping those pred accepts
     template<class Pred>
     std::vector<Eigen::Index> nearestFirst

@@ -41,6 +41,7 @@ std::vector<badInput> catalogue()
         {"NegativeRadius", mv + st + "supportRadius -1;", "supportRadius"},
         {"MissingRadius", mv + st, "supportRadius"},
         {"UnknownKeyword", mv + st + r + "suportRadius 2;", "suportRadius"},
+        {"MisspeltRequiredKeyword", mv + st + "suportRadius 0.5;", "Unknown keyword suportRadius"},
         {"PolynomialNotBool", mv + st + r + "polynomial maybe;", "polynomial"},
         {"TPSWithoutPolynomial", mv + st + r + "function TPS; polynomial false;", "polynomial"},
         {"ControlPointsNotDict", mv + st + r + "controlPoints all;", "controlPoints"},

@@ -85,7 +85,7 @@ TEST(Modes, AffineMotionExactInEveryMode)
         autoPtr<motionSolver> ms(select(c));
         auto& solver = refCast<dcpRBFMotionSolver>(ms());
         const auto f = [](const point& x) { return vector(0.2*x.y() + 0.1, -0.15*x.x(), 0); };
-        for (const word& n : {"left", "right", "bottom", "top"}) prescribe(solver.pointDisplacement(), n, f);
+        for (const word n : {"left", "right", "bottom", "top"}) prescribe(solver.pointDisplacement(), n, f);
         const pointField p0(solver.points0());
         const pointField p(ms->newPoints());
         EXPECT_LT(solver.controlPoints().size(), 20);

@@ -41,7 +41,7 @@ TEST(Symmetry, SymmetryPlanePointsStayInTheirPlane)
 
         const polyBoundaryMesh& bm = c.mesh().boundaryMesh();
         label nSliding = 0;
-        for (const word& patch : {"front", "back"})
+        for (const word patch : {"front", "back"})
         {
             for (const label i : bm[bm.findPatchID(patch)].meshPoints())
             {

@@ -30,7 +30,8 @@ Foam::dcpRBFTest::testCase::testCase
     label dim,
     label n,
     const string& coeffs,
-    const word& frontBack
+    const word& frontBack,
+    const string& bottomBC
 )
 {
     char tmpl[] = "/tmp/dcpRBFTest-XXXXXX";
@@ -84,7 +85,8 @@ Foam::dcpRBFTest::testCase::testCase
         "0/pointDisplacement", "pointVectorField",
         "dimensions [0 1 0 0 0 0 0];\ninternalField uniform (0 0 0);\n"
         "boundaryField\n{\n"
-        "    \"(left|right|bottom|top)\" { type fixedValue; value uniform (0 0 0); }\n"
+        "    \"(left|right|top)\" { type fixedValue; value uniform (0 0 0); }\n"
+        "    bottom " + bottomBC + "\n"
         "    \"(front|back)\" " + frontBC + "\n}\n"
     );
 

@@ -1,0 +1,243 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF tests: one evaluation of the conditions per step, refused
+  conditions, maxPoints marked, dynamic swaps over several steps
+-------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF, GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "testHelpers.H"
+#include "countingDisplacement.H"
+#include "addToRunTimeSelectionTable.H"
+#include "IFstream.H"
+
+#include <gtest/gtest.h>
+#include <set>
+#include <sstream>
+
+namespace Foam
+{
+namespace dcpRBFTest
+{
+    label countingDisplacement::nEvaluations = 0;
+    defineTypeNameAndDebug(countingDisplacement, 0);
+    addToRunTimeSelectionTable
+    (
+        pointPatchVectorField, countingDisplacement, dictionary
+    );
+}
+}
+
+using namespace Foam;
+using namespace Foam::dcpRBFTest;
+
+namespace
+{
+
+const std::string patches =
+    "movingPatches (bottom); staticPatches (top left right); supportRadius 0.8;";
+
+//- The rows of postProcessing/dcpRBF/0/dcpRBF.dat, as numbers
+std::vector<std::vector<double>> stepRows(const testCase& c)
+{
+    std::vector<std::vector<double>> rows;
+    std::ifstream is(c.dir()/"postProcessing"/"dcpRBF"/"0"/"dcpRBF.dat");
+    std::string line;
+    while (std::getline(is, line))
+    {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream ls(line);
+        std::vector<double> row;
+        double x;
+        while (ls >> x) row.push_back(x);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+// Columns of dcpRBF.dat (dcpRBFStepLog)
+enum column { cTime, cControl, cAdded, cRemoved, cGuard, cCells, cMinQ, cMeanQ,
+    cError, cAtMax };
+
+
+class OneEvaluation : public ::testing::TestWithParam<std::tuple<int, std::string>> {};
+
+// A condition that moves its patch by `increment` per evaluation: after n
+// steps the patch is n increments away, as with OpenFOAM's own solvers
+TEST_P(OneEvaluation, ConditionsAreEvaluatedOncePerStep)
+{
+    const label dim = std::get<0>(GetParam());
+    testCase c
+    (
+        dim, 6, patches + " controlPoints { " + std::get<1>(GetParam()) + " }",
+        "wall",
+        "{ type countingDisplacement; increment (0 0.01 0); value uniform (0 0 0); }"
+    );
+    autoPtr<motionSolver> ms(select(c));
+    const pointField p0(refCast<dcpRBFMotionSolver>(ms()).points0());
+    countingDisplacement::nEvaluations = 0;
+    const label nSteps = 3;
+    pointField p;
+    for (label step = 1; step <= nSteps; ++step)
+    {
+        ++c.runTime();
+        p = ms->newPoints();
+    }
+    EXPECT_EQ(countingDisplacement::nEvaluations, nSteps);
+    label nBottom = 0, nInterior = 0;
+    const scalar eps = 1e-9;
+    forAll(p0, i)
+    {
+        const point& x = p0[i];
+        // away from the side walls (and, in 3D, the front and back walls)
+        const bool between =
+            x.x() > eps && x.x() < 1 - eps
+         && (dim == 2 || (x.z() > eps && x.z() < 1 - eps));
+        if (!between) continue;
+        if (x.y() < eps)
+        {
+            EXPECT_LT(mag(p[i] - x - vector(0, 0.01*nSteps, 0)), 1e-12)
+                << x.x() << " " << x.y() << " " << x.z();
+            ++nBottom;
+        }
+        else if (x.y() < 0.5)
+        {
+            // the volume near the wall moves too, less than the wall
+            EXPECT_GT(p[i].y() - x.y(), 1e-6) << x.x() << " " << x.y() << " " << x.z();
+            EXPECT_LT(p[i].y() - x.y(), 0.01*nSteps + 1e-12) << x.x() << " " << x.y();
+            ++nInterior;
+        }
+    }
+    EXPECT_GT(nBottom, 0);
+    EXPECT_GT(nInterior, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P
+(
+    DimsAndModes, OneEvaluation,
+    ::testing::Combine
+    (
+        ::testing::Values(2, 3),
+        ::testing::Values
+        (
+            "selection all;",
+            "selection greedy;",
+            "selection dynamic;"
+        )
+    )
+);
+
+
+class UnprescribedMovingPatch : public ::testing::TestWithParam<std::string> {};
+
+// A moving patch whose condition does not fix the value would not move
+TEST_P(UnprescribedMovingPatch, IsRefusedNamingPatchAndType)
+{
+    const std::string type = GetParam();
+    testCase c(2, 3, patches, "wall", "{ type " + type + "; value uniform (0 0 0); }");
+    try
+    {
+        autoPtr<motionSolver> ms(select(c));
+        FAIL() << "no error for a moving patch of type " << type;
+    }
+    catch (const Foam::IOerror& e)
+    {
+        const std::string m(e.message());
+        EXPECT_NE(m.find("movingPatches"), std::string::npos) << m;
+        EXPECT_NE(m.find("bottom"), std::string::npos) << m;
+        EXPECT_NE(m.find(type), std::string::npos) << m;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P
+(
+    Types, UnprescribedMovingPatch, ::testing::Values("calculated", "zeroGradient")
+);
+
+
+vector bump(const point& p, scalar a)
+{
+    return vector(0, a*std::sin(constant::mathematical::pi*p.x()), 0);
+}
+
+// maxPoints reached with the boundary error above reselectTolerance: the
+// step is marked in dcpRBF.dat; with room to spare it is not
+TEST(MaxPoints, ReachedWithErrorAboveToleranceIsMarked)
+{
+    for (const label maxPoints : {5, 2000})
+    {
+        testCase c
+        (
+            2, 12, patches + " controlPoints { selection greedy; tolerance 1e-6;"
+            " reselectTolerance 1e-5; maxPoints " + std::to_string(maxPoints) + "; }"
+        );
+        autoPtr<motionSolver> ms(select(c));
+        auto& solver = refCast<dcpRBFMotionSolver>(ms());
+        ++c.runTime();
+        prescribe(solver.pointDisplacement(), "bottom", [](const point& x) { return bump(x, 0.1); });
+        ms->newPoints();
+        const auto rows = stepRows(c);
+        ASSERT_EQ(rows.size(), 1u);
+        ASSERT_GT(rows[0].size(), std::size_t(cAtMax));
+        EXPECT_EQ(rows[0][cAtMax], maxPoints == 5 ? 1 : 0) << "maxPoints " << maxPoints;
+        EXPECT_LE(solver.controlPoints().size(), maxPoints);
+        if (maxPoints == 5)
+        {
+            EXPECT_GT(rows[0][cError], 1e-5);
+        }
+    }
+}
+
+// Dynamic control points over several steps of a growing bump: points swap,
+// the set's size follows the additions and removals, the wall is exact at
+// every step and the mesh stays valid
+TEST(DynamicSwaps, HappenOverStepsAndKeepTheWallExact)
+{
+    testCase c(2, 12, patches + " controlPoints { selection dynamic; tolerance 1e-2; protectSteps 1; }");
+    autoPtr<motionSolver> ms(select(c));
+    auto& solver = refCast<dcpRBFMotionSolver>(ms());
+    const pointField p0(solver.points0());
+    std::set<Eigen::Index> first;
+    const label nSteps = 6;
+    for (label step = 1; step <= nSteps; ++step)
+    {
+        ++c.runTime();
+        const scalar a = 0.05*step;
+        prescribe(solver.pointDisplacement(), "bottom", [a](const point& x) { return bump(x, a); });
+        const pointField p(ms->newPoints());
+        c.mesh().movePoints(p);
+        if (step == 1)
+        {
+            const auto& idx = solver.controlPoints().set().indices();
+            first.insert(idx.begin(), idx.end());
+        }
+        forAll(p0, i)
+        {
+            if (p0[i].y() == 0 && p0[i].x() > 0 && p0[i].x() < 1)
+            {
+                EXPECT_LT(mag(p[i] - p0[i] - bump(p0[i], a)), 1e-12) << "step " << step;
+            }
+        }
+        EXPECT_FALSE(c.mesh().checkMesh(false)) << "mesh errors at step " << step;  // true: errors
+    }
+    const auto rows = stepRows(c);
+    ASSERT_EQ(label(rows.size()), nSteps);
+    double added = 0, removed = 0;
+    for (label s = 1; s < nSteps; ++s)
+    {
+        added += rows[s][cAdded];
+        removed += rows[s][cRemoved];
+        // the set's size follows the step's additions and removals
+        EXPECT_EQ(rows[s][cControl], rows[s - 1][cControl] + rows[s][cAdded] + rows[s][cGuard]
+            - rows[s][cRemoved]) << "step " << s + 1;
+    }
+    EXPECT_GT(added, 0);
+    EXPECT_GT(removed, 0);
+    const auto& idx = solver.controlPoints().set().indices();
+    const std::set<Eigen::Index> last(idx.begin(), idx.end());
+    EXPECT_NE(first, last) << "the control set never changed";
+}
+
+} // namespace
+
+// ************************************************************************* //
