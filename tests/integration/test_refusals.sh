@@ -1,0 +1,81 @@
+# Integration tests: meshes dcpRBF cannot move correctly are refused at the
+# start, with a message naming the patch (not a crash later, not a silent run).
+
+# refusedWith WORDS...: moveDynamicMesh fails and its log has every WORD
+refusedWith() {
+    if moveDynamicMesh > log.moveDynamicMesh 2>&1
+    then
+        fail "moveDynamicMesh accepted the case"
+    fi
+    grep -q "FOAM FATAL" log.moveDynamicMesh || fail "no FatalError: $(tail -n 5 log.moveDynamicMesh)"
+    local w
+    for w in "$@"
+    do
+        grep -q -- "$w" log.moveDynamicMesh || fail "the error does not say '$w': $(grep -A4 'FOAM FATAL' log.moveDynamicMesh)"
+    done
+}
+
+# channelBlock LEFT_RIGHT_TYPE FRONT_BACK_TYPE VERTICES: a 4 x 4 x NZ block with
+# patches bottom (wall) top, left/right and front/back of the given types
+channelBlock() {
+    local nbrL="" nbrR=""
+    [ "$1" = cyclic ] && nbrL="neighbourPatch right;" && nbrR="neighbourPatch left;"
+    write_motionControls .
+    writeFile system/blockMeshDict dictionary <<EOT
+vertices ($3);
+blocks (hex (0 1 2 3 4 5 6 7) (4 4 ${4:-4}) simpleGrading (1 1 1));
+boundary
+(
+    bottom { type wall; faces ((0 1 5 4)); }
+    top { type patch; faces ((3 7 6 2)); }
+    left { type $1; $nbrL faces ((0 4 7 3)); }
+    right { type $1; $nbrR faces ((1 2 6 5)); }
+    front { type $2; faces ((0 3 2 1)); }
+    back { type $2; faces ((4 5 6 7)); }
+);
+EOT
+    run blockMesh || return 1
+}
+
+# bottomRaised EXTRA: pointDisplacement lifting the bottom wall; EXTRA: more patches
+bottomRaised() {
+    writeFile 0/pointDisplacement pointVectorField <<EOT
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    bottom { type uniformFixedValue; uniformValue (0 0.01 0); value uniform (0 0 0); }
+    top { type fixedValue; value uniform (0 0 0); }
+    $1
+}
+EOT
+}
+
+test_wedge_refusedNamingThePatch() {
+    # a 5 deg wedge about the x axis, 0.5 to 1 from it
+    local c=0.9990482 s=0.0436194
+    channelBlock patch wedge "(0 0.5 -0.0218097) (1 0.5 -0.0218097) (1 $c -$s) (0 $c -$s)
+        (0 0.5 0.0218097) (1 0.5 0.0218097) (1 $c $s) (0 $c $s)" 1 || return 1
+    bottomRaised "\"(left|right)\" { type fixedValue; value uniform (0 0 0); }
+    \"(front|back)\" { type wedge; }"
+    dynamicMeshDict "movingPatches (bottom); staticPatches (top left right); supportRadius 1;"
+    refusedWith "front" "wedge"
+}
+
+test_cyclic_refusedNamingThePatch() {
+    channelBlock cyclic wall "(0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1)" || return 1
+    bottomRaised "\"(left|right)\" { type cyclic; }
+    \"(front|back)\" { type fixedValue; value uniform (0 0 0); }"
+    # unlisted (the usual case): refused at the start, not at step 2
+    dynamicMeshDict "movingPatches (bottom); staticPatches (top front back); supportRadius 1;"
+    refusedWith "left" "cyclic"
+    grep -q "^Time = " log.moveDynamicMesh && fail "refused only after a time step" || true
+}
+
+test_calculatedMovingPatch_refused() {
+    channelBlock patch wall "(0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1)" || return 1
+    bottomRaised "\"(left|right|front|back)\" { type fixedValue; value uniform (0 0 0); }"
+    foamDictionary 0/pointDisplacement -entry boundaryField/bottom -set "{ type calculated; value uniform (0 0 0); }" > /dev/null
+    dynamicMeshDict "movingPatches (bottom); staticPatches (top left right front back); supportRadius 1;"
+    refusedWith "movingPatches" "bottom" "calculated"
+}
