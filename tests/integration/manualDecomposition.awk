@@ -8,16 +8,18 @@
 # that patch's faces there:
 #   - the cut: cells whose centre has x > cut go to processor 1, the others
 #     to 0 (the plane x = cut should go through a moving and a static patch);
-#   - then every cell that touches a moving or a static patch by a vertex or
-#     an edge only (no face on it) goes to the other processor.
+#   - then every cell that touches a moving patch by a vertex or an edge
+#     only (no moving face), or a static patch likewise and has no moving
+#     face, goes to the other processor.
 # So each such cell holds patch points whose patch faces are all on the
 # other processor.
 #
 # Writes the labelList to stdout; to stderr (one line):
-#   cells N proc1 N1 movingDanger M staticDanger S
+#   cells N proc1 N1 movingDanger M staticDanger S mixedDanger X
 # where M (S) counts (processor, point) pairs: a moving (static) patch point
 # used by a cell of that processor and by none of its faces on a moving
-# (static) patch owned by that processor. Exits 1 if the mesh files do not
+# (static) patch owned by that processor; X: a point on both a moving and a
+# static patch where that processor holds only static faces. Exits 1 if the mesh files do not
 # parse.
 #
 # With -v bendPatch=wing -v bend="A X0 S" -v dir=constant/boundaryData/wing,
@@ -112,7 +114,7 @@ END {
         for (j = 1; j <= cn[c]; j++) {
             pt = cpt[c, j]
             if ((onPatch["m", pt] && !hasFace["m", c]) \
-             || (onPatch["s", pt] && !hasFace["s", c])) flip = 1
+             || (onPatch["s", pt] && !hasFace["s", c] && !hasFace["m", c])) flip = 1
         }
         if (flip) proc[c] = 1 - proc[c]
         nProc1 += proc[c]
@@ -130,6 +132,8 @@ END {
         split(k, v, SUBSEP)
         if (onPatch["m", v[2]] && !heldByFace["m", v[1], v[2]]) danger["m"]++
         if (onPatch["s", v[2]] && !heldByFace["s", v[1], v[2]]) danger["s"]++
+        if (onPatch["m", v[2]] && onPatch["s", v[2]] \
+         && heldByFace["s", v[1], v[2]] && !heldByFace["m", v[1], v[2]]) danger["x"]++
     }
 
     print "FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }"
@@ -138,8 +142,8 @@ END {
     for (c = 0; c < nCells; c++) print proc[c]
     print ")"
     if (bendPatch != "") writeBend()
-    printf "cells %d proc1 %d movingDanger %d staticDanger %d\n", \
-        nCells, nProc1, danger["m"] + 0, danger["s"] + 0 > "/dev/stderr"
+    printf "cells %d proc1 %d movingDanger %d staticDanger %d mixedDanger %d\n", \
+        nCells, nProc1, danger["m"] + 0, danger["s"] + 0, danger["x"] + 0 > "/dev/stderr"
 }
 
 function writeBend(   b, f, j, pt, np, list) {

@@ -10,7 +10,7 @@ manualDecompositionDict='method manual; manualCoeffs { dataFile "cellDecompositi
 # manualDecomposition CUT MOVING STATIC NEED [AWK ARGS...]: write
 # constant/cellDecomposition (cut at x = CUT, see manualDecomposition.awk);
 # fail unless it creates dangerous points of each kind in NEED ("moving",
-# "moving static")
+# "static", "mixed": see manualDecomposition.awk)
 manualDecomposition() {
     local cut="$1" moving="$2" static="$3" need="$4" counts kind n
     shift 4
@@ -27,15 +27,19 @@ manualDecomposition() {
     done
 }
 
-# write_cubeIn26Blocks N: the hollow cube's geometry (body: half side 0.5,
+# cubeVertex I J K: the label of vertex (I, J, K) of write_cubeIn26Blocks
+cubeVertex() { echo $(($1 + 4*$2 + 16*$3)); }
+
+# write_cubeIn26Blocks N [lid]: the hollow cube's geometry (body: half side 0.5,
 # outer: half side 2) meshed as 3x3x3 blocks of N^3 cells minus the centre
 # one: unlike write_hollowCube's six blocks (an O-grid: every cell that
 # touches the body has a face on it), the diagonal blocks put cells on the
-# body's edges and corners that touch it by an edge or a vertex only
+# body's edges and corners that touch it by an edge or a vertex only. With
+# "lid", the body's top face (z = 0.5) is a patch of its own, "lid".
 write_cubeIn26Blocks() {
-    local n="$1" i j k c=(-2 -0.5 0.5 2)
+    local n="$1" i j k c=(-2 -0.5 0.5 2) top
     write_motionControls .
-    v() { echo $(($1 + 4*$2 + 16*$3)); }
+    top="($(cubeVertex 1 1 2) $(cubeVertex 2 1 2) $(cubeVertex 2 2 2) $(cubeVertex 1 2 2))"
     {
         echo "FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }"
         echo "vertices ("
@@ -47,16 +51,19 @@ write_cubeIn26Blocks() {
         for k in 0 1 2; do for j in 0 1 2; do for i in 0 1 2
         do
             [ "$i$j$k" = 111 ] && continue
-            echo "hex ($(v $i $j $k) $(v $((i+1)) $j $k) $(v $((i+1)) $((j+1)) $k) $(v $i $((j+1)) $k)" \
-                "$(v $i $j $((k+1))) $(v $((i+1)) $j $((k+1))) $(v $((i+1)) $((j+1)) $((k+1))) $(v $i $((j+1)) $((k+1))))" \
+            echo "hex ($(cubeVertex $i $j $k) $(cubeVertex $((i+1)) $j $k) $(cubeVertex $((i+1)) $((j+1)) $k) $(cubeVertex $i $((j+1)) $k)" \
+                "$(cubeVertex $i $j $((k+1))) $(cubeVertex $((i+1)) $j $((k+1))) $(cubeVertex $((i+1)) $((j+1)) $((k+1))) $(cubeVertex $i $((j+1)) $((k+1))))" \
                 "($n $n $n) simpleGrading (1 1 1)"
         done; done; done
         echo "); boundary ( body { type wall; faces ("
         # the faces of the centre block, pointing into it (out of the domain)
-        echo "($(v 1 1 1) $(v 1 2 1) $(v 2 2 1) $(v 2 1 1))  ($(v 1 1 2) $(v 2 1 2) $(v 2 2 2) $(v 1 2 2))"
-        echo "($(v 1 1 1) $(v 2 1 1) $(v 2 1 2) $(v 1 1 2))  ($(v 1 2 1) $(v 1 2 2) $(v 2 2 2) $(v 2 2 1))"
-        echo "($(v 1 1 1) $(v 1 1 2) $(v 1 2 2) $(v 1 2 1))  ($(v 2 1 1) $(v 2 2 1) $(v 2 2 2) $(v 2 1 2))"
-        echo "); } );"
+        echo "($(cubeVertex 1 1 1) $(cubeVertex 1 2 1) $(cubeVertex 2 2 1) $(cubeVertex 2 1 1))"
+        [ "$2" = lid ] || echo "$top"
+        echo "($(cubeVertex 1 1 1) $(cubeVertex 2 1 1) $(cubeVertex 2 1 2) $(cubeVertex 1 1 2))  ($(cubeVertex 1 2 1) $(cubeVertex 1 2 2) $(cubeVertex 2 2 2) $(cubeVertex 2 2 1))"
+        echo "($(cubeVertex 1 1 1) $(cubeVertex 1 1 2) $(cubeVertex 1 2 2) $(cubeVertex 1 2 1))  ($(cubeVertex 2 1 1) $(cubeVertex 2 2 1) $(cubeVertex 2 2 2) $(cubeVertex 2 1 2))"
+        echo "); }"
+        [ "$2" = lid ] && echo "lid { type wall; faces ($top); }"
+        echo ");"
         echo "defaultPatch { name outer; type patch; }"
     } > system/blockMeshDict
 }
@@ -150,4 +157,25 @@ test_parallelManual_cube3D_staticBody_equalsSerial() {
     manualDecomposition 0.1 "outer" "body" "static" || return 1
     pitchingPointDisplacement outer "(1 1 1)" "(0 0 0)" 0.15 body ""
     everySelectionParallelEqualsSerial 0.5 "movingPatches (outer); staticPatches (body); supportRadius 3;"
+}
+
+# the hollow cube (26 blocks) whose top face is a static patch "lid": the
+# lid's edge points move (moving wins); a processor that holds them only
+# through lid faces must move them too
+test_parallelManual_cube3D_staticLid_equalsSerial() {
+    write_cubeIn26Blocks 4 lid
+    run blockMesh || return 1
+    foamDictionary system/controlDict -entry endTime -set 0.5 > /dev/null
+    manualDecomposition 0.1 "body" "outer lid" "moving mixed" \
+        -v bendPatch=body -v bend="0.3 0 0.2" -v threeD=1 -v dir=constant/boundaryData/body || return 1
+    writeFile 0/pointDisplacement pointVectorField <<'EOT'
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    body { type timeVaryingMappedFixedValue; mapMethod nearest; value uniform (0 0 0); }
+    "(outer|lid)" { type fixedValue; value uniform (0 0 0); }
+}
+EOT
+    everySelectionParallelEqualsSerial 0.5 "movingPatches (body); staticPatches (outer lid); supportRadius 1.5;"
 }
