@@ -75,7 +75,7 @@ write_cubeIn26Blocks() {
 # passes on the reconstructed mesh. Tries every combination, then fails if
 # any failed.
 everySelectionParallelEqualsSerial() {
-    local time="$1" coeffs="$2" selection correction dir nFailed=0 out
+    local time="$1" coeffs="$2" selection correction dir failed=() out
     for selection in "selection all;" "selection greedy; tolerance 1e-2;" \
         "selection dynamic; tolerance 1e-2;"
     do
@@ -95,13 +95,15 @@ everySelectionParallelEqualsSerial() {
             then
                 echo "ok   $dir: ${out##*points: }"
             else
-                nFailed=$((nFailed + 1))
+                failed+=("$dir")
                 echo "FAIL $dir: $(echo "$out" | tail -n 1)"
-                grep -h -m1 -A4 'FOAM FATAL' "$dir"/par/log.* 2>/dev/null | grep -v '^ *$' | head -n 5 | sed 's/^/       /'
+                # the first fatal error's message
+                grep -h -m1 -A1 'FOAM FATAL' "$dir"/log.* "$dir"/par/log.* 2>/dev/null \
+                    | sed -n 2p | cut -c1-160 | sed 's/^/       /'
             fi
         done
     done
-    [ "$nFailed" -eq 0 ] || fail "$nFailed of 6 selection x boundaryCorrection runs failed"
+    [ ${#failed[@]} -eq 0 ] || fail "${#failed[@]} of 6 runs failed: ${failed[*]}"
 }
 
 # the airfoil, its wing bent and stretched (non-rigid) through a
