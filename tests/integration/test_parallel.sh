@@ -1,16 +1,17 @@
 # Integration tests: parallel runs give the serial points.
 
-# parallelEqualsSerial TIME: run moveDynamicMesh serial (here) and on 2
-# processors (in par/), reconstruct, compare the points at TIME: 1e-10
-# relative to the domain size
+# parallelEqualsSerial TIME [DECOMPOSITION]: run moveDynamicMesh serial
+# (here) and on 2 processors (in par/), reconstruct, compare the points at
+# TIME: 1e-10 relative to the domain size. DECOMPOSITION: the method entries
+# of decomposeParDict (default: simple, split in x)
 parallelEqualsSerial() {
-    local time="$1" diff
+    local time="$1" decomposition='method simple; coeffs { n (2 1 1); }' diff
+    [ $# -gt 1 ] && decomposition="$2"
     mkdir -p par
     cp -r constant system 0 par/
-    writeFile par/system/decomposeParDict dictionary <<'EOT'
+    writeFile par/system/decomposeParDict dictionary <<EOT
 numberOfSubdomains 2;
-method simple;
-coeffs { n (2 1 1); }
+$decomposition
 EOT
     run moveDynamicMesh || return 1
     (
