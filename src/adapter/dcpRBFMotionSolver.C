@@ -417,9 +417,20 @@ void Foam::dcpRBFMotionSolver::solve()
     }
 
     // The fixed-value conditions' values inserted (not re-evaluated), the
-    // constraints applied, as OpenFOAM's own displacement solvers do
+    // constraints applied, as OpenFOAM's own displacement solvers do; then
+    // the listed patches' rule, the same on every processor: moving points
+    // where prescribed (also where a static patch's condition says
+    // otherwise), static points in place
     pointConstraints::New(pointDisplacement_.mesh())
         .constrainDisplacement(pointDisplacement_, false);
+    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    forAll(disp, pointi)
+    {
+        if (boundaryPoints_.kind(pointi) != dcpRBFBoundaryPoints::interiorPoint)
+        {
+            disp[pointi] = prescribed_[pointi];
+        }
+    }
     log_.write(r);
 }
 
