@@ -185,7 +185,12 @@ bool Foam::dcpRBFControlPoints::select(const dcprbf::Values& d)
     catch (const dcprbf::Error& e)
     {
         FatalErrorInFunction
-            << "Greedy selection failed: " << e.what() << exit(FatalError);
+            << "Greedy selection failed: " << e.what() << nl
+            << "    The candidates are the points of movingPatches and"
+            << " staticPatches. With the polynomial they must span the space"
+            << " (not all on one line in 2D, not all in one plane in 3D): add"
+            << " a patch off that plane to staticPatches, or set polynomial"
+            << " false" << exit(FatalError);
     }
     ready_ = true;
     return true;

@@ -122,7 +122,9 @@ std::vector<Eigen::Index> GreedySelector::seed
     const Values& d
 ) const
 {
-    const LinearPolynomial poly(polynomial_, dim_);
+    // the candidates' bounding-box frame: a check in raw coordinates fails for
+    // sets far from the origin (terrain in UTM coordinates)
+    const LinearPolynomial poly(LinearPolynomial::boundingBox(polynomial_, dim_, x));
     std::vector<Eigen::Index> s = options_.seed;
     if (s.empty())
     {
