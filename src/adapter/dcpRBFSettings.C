@@ -121,7 +121,8 @@ void Foam::dcpRBFSettings::checkPatchLists
 Foam::scalar Foam::dcpRBFSettings::readRadius
 (
     const dictionary& dict,
-    const polyMesh& mesh
+    const polyMesh& mesh,
+    const pointField& points0
 ) const
 {
     ITstream& is = dict.lookup("supportRadius");
@@ -141,7 +142,7 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
         boundBox bb(boundBox::invertedBox);
         for (const label patchi : movingPatchIDs_)
         {
-            bb.add(mesh.boundaryMesh()[patchi].localPoints());
+            bb.add(points0, mesh.boundaryMesh()[patchi].meshPoints());
         }
         bb.reduce();
         radius = factor*bb.mag();
@@ -159,13 +160,14 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
 dcprbf::RadialKernel Foam::dcpRBFSettings::readKernel
 (
     const dcpRBFDictReader& r,
-    const polyMesh& mesh
+    const polyMesh& mesh,
+    const pointField& points0
 ) const
 {
     const auto& n = dcprbf::RadialKernel::names();
     const wordList names(n.begin(), n.end());
     const label i = r.getChoice("function", names, "WendlandC2");
-    return dcprbf::RadialKernel::fromName(names[i], readRadius(r.dict(), mesh));
+    return dcprbf::RadialKernel::fromName(names[i], readRadius(r.dict(), mesh, points0));
 }
 
 
@@ -174,7 +176,8 @@ dcprbf::RadialKernel Foam::dcpRBFSettings::readKernel
 Foam::dcpRBFSettings::dcpRBFSettings
 (
     const dictionary& dict,
-    const polyMesh& mesh
+    const polyMesh& mesh,
+    const pointField& points0
 )
 :
     movingPatchIDs_
@@ -182,7 +185,7 @@ Foam::dcpRBFSettings::dcpRBFSettings
         readPatches(checkKeywords(dict), "movingPatches", mesh.boundaryMesh(), false)
     ),
     staticPatchIDs_(readPatches(dict, "staticPatches", mesh.boundaryMesh(), true)),
-    kernel_(readKernel(dcpRBFDictReader(dict), mesh)),
+    kernel_(readKernel(dcpRBFDictReader(dict), mesh, points0)),
     polynomial_(dcpRBFDictReader(dict).getSwitch("polynomial", true))
 {
     const dcpRBFDictReader r(dict);

@@ -69,3 +69,11 @@ test_hollowCube3D_restartEqualsUninterrupted() {
     dynamicMeshDict "movingPatches (body); staticPatches (outer); supportRadius 1.5;"
     restartEqualsUninterrupted
 }
+
+test_airfoil2D_restartEveryMode_serial() {
+    restartEveryMode 1 modeRun2D
+}
+
+test_cube3D_restartEveryMode_parallel() {
+    restartEveryMode 2 modeRun3D
+}
