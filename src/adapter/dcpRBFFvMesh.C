@@ -31,9 +31,10 @@ dcprbf::TetQuality::Metric readMetric(const Foam::dictionary& dict)
     }
     const Foam::dcpRBFDictReader r(coeffs);
     r.checkKeywords({"qualityMetric"});
-    return dcprbf::TetQuality::Metric
+    return r.getEnum
     (
-        r.getChoice("qualityMetric", Foam::dcpRBFSettings::metricNames, "sizeShape")
+        "qualityMetric", Foam::dcpRBFSettings::metricNames,
+        dcprbf::TetQuality::Metric::sizeShape
     );
 }
 

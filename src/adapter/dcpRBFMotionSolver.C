@@ -327,7 +327,7 @@ void Foam::dcpRBFMotionSolver::initialise()
         << settings_.kernel().radius() << ", polynomial "
         << Switch(settings_.polynomial()) << ", " << projection_.dim()
         << "D, selection "
-        << dcpRBFSelectionSettings::modeNames[label(settings_.selection().selection)]
+        << dcpRBFSelectionSettings::modeNames[settings_.selection().selection]
         << "), " << region_.size() << " cells in reach" << endl;
 }
 

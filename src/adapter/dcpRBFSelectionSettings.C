@@ -7,11 +7,20 @@
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
 
-const Foam::wordList Foam::dcpRBFSelectionSettings::modeNames
-({"all", "greedy", "dynamic"});
+const Foam::Enum<Foam::dcpRBFSelectionSettings::mode>
+Foam::dcpRBFSelectionSettings::modeNames
+({
+    {mode::all, "all"},
+    {mode::greedy, "greedy"},
+    {mode::dynamic, "dynamic"}
+});
 
-const Foam::wordList Foam::dcpRBFSelectionSettings::targetNames
-({"displacement", "unit"});
+const Foam::Enum<Foam::dcpRBFSelectionSettings::target>
+Foam::dcpRBFSelectionSettings::targetNames
+({
+    {target::displacement, "displacement"},
+    {target::unit, "unit"}
+});
 
 const Foam::wordList Foam::dcpRBFSelectionSettings::keywords
 ({
@@ -27,7 +36,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     const dcpRBFDictReader r(dict);
     r.checkKeywords(keywords);
 
-    selection = mode(r.getChoice("selection", modeNames, "all"));
+    selection = r.getEnum("selection", modeNames, mode::all);
     tolerance = r.getScalar("tolerance", 1e-3, 0, 1);
     minPoints = r.getLabel("minPoints", 0, 0, labelMax);
     maxPoints = r.getLabel("maxPoints", max(2000, minPoints), 1, labelMax);
@@ -38,7 +47,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
             << maxPoints << ")" << exit(FatalIOError);
     }
     doubleEdged = r.getSwitch("doubleEdged", false);
-    selectOn = target(r.getChoice("selectOn", targetNames, "displacement"));
+    selectOn = r.getEnum("selectOn", targetNames, target::displacement);
     reselectTolerance =
         r.getScalar("reselectTolerance", min(10*tolerance, 1.0), tolerance, GREAT);
     nSwap = r.getLabel("nSwap", 1, 0, 1000);
@@ -65,7 +74,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
             {
                 FatalIOErrorInFunction(dict)
                     << "Keyword " << k << " has no effect with selection "
-                    << modeNames[label(selection)] << ". It belongs to"
+                    << modeNames[selection] << ". It belongs to"
                     << " selection dynamic" << exit(FatalIOError);
             }
         }

@@ -10,10 +10,19 @@
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
 
-const Foam::wordList Foam::dcpRBFSettings::floorActionNames({"warn", "stop"});
+const Foam::Enum<Foam::dcpRBFSettings::floorAction>
+Foam::dcpRBFSettings::floorActionNames
+({
+    {floorAction::warn, "warn"},
+    {floorAction::stop, "stop"}
+});
 
-const Foam::wordList Foam::dcpRBFSettings::metricNames
-({"sizeShape", "size", "shape"});
+const Foam::Enum<dcprbf::TetQuality::Metric> Foam::dcpRBFSettings::metricNames
+({
+    {dcprbf::TetQuality::Metric::sizeShape, "sizeShape"},
+    {dcprbf::TetQuality::Metric::size, "size"},
+    {dcprbf::TetQuality::Metric::shape, "shape"}
+});
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -210,12 +219,12 @@ Foam::dcpRBFSettings::dcpRBFSettings
         selection_ = dcpRBFSelectionSettings(dict.subDict("controlPoints"));
     }
 
-    metric_ = dcprbf::TetQuality::Metric
+    metric_ = r.getEnum
     (
-        r.getChoice("qualityMetric", metricNames, "sizeShape")
+        "qualityMetric", metricNames, dcprbf::TetQuality::Metric::sizeShape
     );
     qualityFloor_ = r.getScalar("qualityFloor", 0, -1, 1 - SMALL);
-    floorAction_ = floorAction(r.getChoice("qualityFloorAction", floorActionNames, "warn"));
+    floorAction_ = r.getEnum("qualityFloorAction", floorActionNames, floorAction::warn);
     guardIterations_ = r.getLabel("guardIterations", 5, 0, 1000);
     boundaryCorrection_ = r.getSwitch("boundaryCorrection", true);
 }
