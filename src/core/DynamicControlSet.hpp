@@ -12,7 +12,17 @@
 //                      steps ago; never below minPoints; a removal the
 //                      solver refuses (polynomial no longer solvable) is
 //                      skipped for the next nearest.
-//  - maxPoints caps additions.
+//  - maxPoints caps additions; swap() exchanges two points at constant size
+//    (also at maxPoints).
+// Error-guided swaps (the adapter's swapRule errorGuided) use:
+//  - mostInaccurateNear(x): among the k candidates nearest to x that are not
+//    control points, the one the interpolant reproduces worst;
+//  - removalOrder(): removable, old-enough control points by ascending
+//    leave-one-out error (Rippa 1999: alpha_j / B_jj, all at once from the
+//    factorization), i.e. what their removal would cost at their own place;
+//  - state()/restore() to undo a trial, and solveBlended() to phase a swap
+//    in over several steps: (1 - w) s_from + w s_this, one interpolant on the
+//    union of both sets' centres.
 // The polynomial frame is the candidates' bounding box, fixed for the life
 // of the set, so coefficients keep their meaning through the changes.
 #pragma once
@@ -81,6 +91,43 @@ public:
 
     //- Restore ages after reset() (e.g. on restart)
     void setAges(const std::vector<int>& ages);
+
+    //- The set's state: its solver, indices and ages (copyable)
+    struct State
+    {
+        IncrementalSaddleSolver solver;
+        std::vector<Eigen::Index> indices;
+        std::vector<int> ages;
+    };
+    State state() const { return State{solver_, indices_, age_}; }
+    void restore(const State& s);
+
+    //- Leave-one-out errors at the centres (rows in the solver's order) of
+    //  the interpolant of these candidate values. O(N^3/3).
+    Values leaveOneOutErrors(const Values& candidateValues) const;
+
+    //- Among the k non-member candidates nearest to x, the one of largest
+    //  |error| (rows: candidates), if above floor; else -1
+    Eigen::Index mostInaccurateNear
+    (
+        const Eigen::RowVector3d& x,
+        const Values& error,
+        int k,
+        double floor
+    ) const;
+
+    //- Candidate indices of the removable, old-enough centres, ascending
+    //  |leave-one-out error| (rows in the solver's order)
+    std::vector<Eigen::Index> removalOrder(const Values& looErrors) const;
+
+    //- Candidate in joins and control point out (candidate index) leaves in
+    //  one O(N^2) update, at constant size. False (nothing changed) if the
+    //  solver refuses either.
+    bool swap(Eigen::Index in, Eigen::Index out);
+
+    //- Solve this set and from for the same values and set the evaluator
+    //  to (1 - w) s_from + w s_this (same frame, centres merged)
+    void solveBlended(const Values& candidateValues, const State& from, double w);
 
     //- See the rules above. Return the candidate index, or -1 if none
     Eigen::Index addNearest(const Eigen::RowVector3d& x);

@@ -215,4 +215,19 @@ void SaddleFactorization::solveFactored
     alpha = y;
 }
 
+Eigen::VectorXd SaddleFactorization::inverseDiagonal() const
+{
+    Eigen::MatrixXd Z = Eigen::MatrixXd::Identity(n_, n_);
+    L_.solveLowerInPlace(Z);
+    Eigen::VectorXd b = Z.colwise().squaredNorm().transpose();
+    if (W_.cols() > 0 && n_ > 0)
+    {
+        Eigen::MatrixXd T = W().transpose()*Z;          // m x N
+        schur_.matrixL().solveInPlace(T);               // R^{-T} W^T Z
+        b -= T.colwise().squaredNorm().transpose();
+    }
+    return b;
+}
+
+
 } // namespace dcprbf

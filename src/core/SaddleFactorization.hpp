@@ -62,6 +62,13 @@ public:
     //- alpha (N x 3) and beta (m x 3) for values at the centres, O(N^2)
     void solve(const Values& values, Values& alpha, Eigen::MatrixX3d& beta) const;
 
+    //- Diagonal of the kernel block of the saddle matrix's inverse,
+    //  B = Phi_c^{-1} - Phi_c^{-1} P S^{-1} P^T Phi_c^{-1} (the same for
+    //  every shift c), from Z = L^{-1}: B_jj = |Z e_j|^2 - |R^{-T} W^T Z e_j|^2
+    //  with S = R^T R. Rippa's leave-one-out error at centre j is
+    //  alpha_j / B_jj. O(N^3/3 + N^2 m).
+    Eigen::VectorXd inverseDiagonal() const;
+
     //- S^{-1} G for an m x 3 matrix G
     Eigen::MatrixX3d schurSolve(const Eigen::MatrixX3d& G) const
     {

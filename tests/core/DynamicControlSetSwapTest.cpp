@@ -1,0 +1,196 @@
+// Unit tests of the error-guided swap pieces of DynamicControlSet: Rippa's
+// leave-one-out errors equal brute-force removal, a constant-size swap equals
+// a fresh set, the join and leave choices, undo, and the blended interpolant.
+#include "DynamicControlSet.hpp"
+#include "KernelCases.hpp"
+#include "TestPoints.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace dcprbf;
+using test::randomPoints;
+using test::smoothField;
+
+namespace
+{
+
+using Index = Eigen::Index;
+
+DynamicControlSet makeSet(const Points& cand, const RadialKernel& k, bool poly, int dim,
+    DynamicControlSet::Options o = {})
+{
+    return DynamicControlSet(cand, std::vector<char>(cand.rows(), 1), k, poly, dim, o);
+}
+
+std::vector<Index> everyThird(Index n)
+{
+    std::vector<Index> idx;
+    for (Index i = 0; i < n; i += 3) idx.push_back(i);
+    return idx;
+}
+
+Values fieldFor(const Points& x, int dim)
+{
+    Values v = smoothField(x);
+    if (dim == 2) v.col(2).setZero();
+    return v;
+}
+
+class LeaveOneOut : public ::testing::TestWithParam<test::KernelCase> {};
+
+// e_j = d_j - s_{-j}(x_j), with s_{-j} the interpolant without centre j
+TEST_P(LeaveOneOut, EqualsBruteForceRemoval)
+{
+    const auto [name, poly, dim] = GetParam();
+    if (RadialKernel::fromName(name, 1.0).needsPolynomial() && !poly)
+    {
+        GTEST_SKIP() << name << " needs the polynomial";
+    }
+    const RadialKernel k = RadialKernel::fromName(name, test::testRadius(name, 0.7));
+    const Points cand = randomPoints(90, dim, 3);
+    const Values v = fieldFor(cand, dim);
+    DynamicControlSet s = makeSet(cand, k, poly, dim);
+    s.reset(everyThird(cand.rows()));
+    const Values loo = s.leaveOneOutErrors(v);
+    ASSERT_EQ(loo.rows(), s.size());
+    const double scale = v.cwiseAbs().maxCoeff();
+    for (Index j = 0; j < s.size(); j += 4)
+    {
+        std::vector<Index> rest(s.indices());
+        const Index left = rest[j];
+        rest.erase(rest.begin() + j);
+        DynamicControlSet without = makeSet(cand, k, poly, dim);
+        without.reset(rest);
+        without.solve(v);
+        const Values sj = without.evaluator().evaluate(cand.row(left));
+        const Eigen::RowVector3d brute = v.row(left) - sj.row(0);
+        EXPECT_LT((loo.row(j) - brute).norm(), 1e-7*scale + 1e-6*brute.norm())
+            << name << " poly " << poly << " " << dim << "D centre " << j;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(KernelsPolyDim, LeaveOneOut, ::testing::ValuesIn(test::kernelCases()),
+    test::kernelCaseName);
+
+struct SwapFixture : ::testing::Test
+{
+    Points cand = randomPoints(200, 3, 9);
+    Values v = smoothField(cand);
+    RadialKernel k = RadialKernel::fromName("WendlandC2", 0.6);
+};
+
+TEST_F(SwapFixture, ConstantSizeSwapEqualsAFreshSet)
+{
+    DynamicControlSet::Options o;
+    o.maxPoints = 67;   // at maxPoints: a swap still happens
+    o.protectSteps = 0;
+    DynamicControlSet s = makeSet(cand, k, true, 3, o);
+    s.reset(everyThird(cand.rows()));
+    ASSERT_EQ(s.size(), 67);
+    ASSERT_TRUE(s.swap(4, 9));
+    EXPECT_EQ(s.size(), 67);
+    EXPECT_TRUE(s.contains(4));
+    EXPECT_FALSE(s.contains(9));
+    EXPECT_EQ(s.indices().back(), 4);
+    DynamicControlSet fresh = makeSet(cand, k, true, 3);
+    fresh.reset(s.indices());
+    s.solve(v);
+    fresh.solve(v);
+    EXPECT_LT((s.evaluator().evaluate(cand) - fresh.evaluator().evaluate(cand)).cwiseAbs().maxCoeff(),
+        1e-10*v.cwiseAbs().maxCoeff());
+    EXPECT_THROW(s.swap(4, 9), Error);   // 4 is a member, 9 is not
+}
+
+TEST_F(SwapFixture, JoinsTheWorstOfTheNearestAndLeavesTheCheapest)
+{
+    DynamicControlSet::Options o;
+    o.protectSteps = 0;
+    DynamicControlSet s = makeSet(cand, k, true, 3, o);
+    s.reset(everyThird(cand.rows()));
+    s.solve(v);
+    const Values error = v - s.evaluator().evaluate(cand);
+    const Eigen::RowVector3d x(0.4, 0.5, 0.6);
+    const int kNear = 6;
+    // brute force: the kNear nearest non-members, the largest error among them
+    std::vector<std::pair<double, Index>> byDistance;
+    for (Index i = 0; i < cand.rows(); ++i)
+    {
+        if (!s.contains(i)) byDistance.emplace_back((cand.row(i) - x).squaredNorm(), i);
+    }
+    std::sort(byDistance.begin(), byDistance.end());
+    Index expected = -1;
+    double worst = 0;
+    for (int r = 0; r < kNear; ++r)
+    {
+        const double e = error.row(byDistance[r].second).norm();
+        if (e > worst) { worst = e; expected = byDistance[r].second; }
+    }
+    EXPECT_EQ(s.mostInaccurateNear(x, error, kNear, 0.0), expected);
+    EXPECT_EQ(s.mostInaccurateNear(x, error, kNear, worst), -1);   // nothing above the floor
+
+    const Values loo = s.leaveOneOutErrors(v);
+    const std::vector<Index> order = s.removalOrder(loo);
+    ASSERT_EQ(Index(order.size()), s.size());
+    for (std::size_t r = 1; r < order.size(); ++r)
+    {
+        const auto pos = [&](Index c)
+        {
+            return std::find(s.indices().begin(), s.indices().end(), c) - s.indices().begin();
+        };
+        EXPECT_LE(loo.row(pos(order[r - 1])).norm(), loo.row(pos(order[r])).norm());
+    }
+}
+
+TEST_F(SwapFixture, RemovalOrderSkipsProtectedAndFixedPoints)
+{
+    std::vector<char> removable(cand.rows(), 1);
+    removable[0] = 0;
+    DynamicControlSet::Options o;
+    o.protectSteps = 2;
+    DynamicControlSet s(cand, removable, k, true, 3, o);
+    s.reset(everyThird(cand.rows()));   // ages = protectSteps: removable
+    ASSERT_TRUE(s.swap(1, 3));          // 1 joins with age 0: protected
+    const std::vector<Index> order = s.removalOrder(s.leaveOneOutErrors(v));
+    EXPECT_EQ(std::count(order.begin(), order.end(), 0), 0);
+    EXPECT_EQ(std::count(order.begin(), order.end(), 1), 0);
+    EXPECT_EQ(Index(order.size()), s.size() - 2);
+}
+
+TEST_F(SwapFixture, RestoreUndoesATrialSwap)
+{
+    DynamicControlSet s = makeSet(cand, k, true, 3);
+    s.reset(everyThird(cand.rows()));
+    s.solve(v);
+    const Values before = s.evaluator().evaluate(cand);
+    const DynamicControlSet::State st = s.state();
+    ASSERT_TRUE(s.swap(5, 6));
+    s.restore(st);
+    EXPECT_TRUE(s.contains(6));
+    EXPECT_FALSE(s.contains(5));
+    s.solve(v);
+    EXPECT_EQ((s.evaluator().evaluate(cand) - before).cwiseAbs().maxCoeff(), 0.0);
+}
+
+TEST_F(SwapFixture, BlendIsTheConvexCombinationOfBothInterpolants)
+{
+    DynamicControlSet s = makeSet(cand, k, true, 3);
+    s.reset(everyThird(cand.rows()));
+    s.solve(v);
+    const Values before = s.evaluator().evaluate(cand);
+    const DynamicControlSet::State from = s.state();
+    ASSERT_TRUE(s.swap(5, 6));
+    ASSERT_TRUE(s.swap(8, 12));
+    s.solve(v);
+    const Values after = s.evaluator().evaluate(cand);
+    const double tol = 1e-12*v.cwiseAbs().maxCoeff();
+    for (const double w : {0.0, 0.25, 1.0})
+    {
+        s.solveBlended(v, from, w);
+        const Values blend = s.evaluator().evaluate(cand);
+        EXPECT_LT((blend - ((1 - w)*before + w*after)).cwiseAbs().maxCoeff(), tol) << "w " << w;
+    }
+}
+
+} // namespace
