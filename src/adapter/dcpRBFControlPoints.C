@@ -75,6 +75,18 @@ void Foam::dcpRBFControlPoints::storeState()
     state_.set("ready", ready_);
     state_.set("indices", indices);
     state_.set("ages", ages);
+    if (blendFrom_)
+    {
+        state_.set("blendStep", blendStep_);
+        state_.set("blendFromIndices", labelList(blendFrom_->indices.begin(), blendFrom_->indices.end()));
+        state_.set("blendFromAges", labelList(blendFrom_->ages.begin(), blendFrom_->ages.end()));
+    }
+    else
+    {
+        state_.remove("blendStep");
+        state_.remove("blendFromIndices");
+        state_.remove("blendFromAges");
+    }
 }
 
 
@@ -98,6 +110,23 @@ bool Foam::dcpRBFControlPoints::readState()
     }
     set_.reset(std::vector<Eigen::Index>(indices.begin(), indices.end()));
     set_.setAges(std::vector<int>(ages.begin(), ages.end()));
+    if (state_.found("blendStep"))
+    {
+        blendStep_ = state_.get<label>("blendStep");
+        const labelList from(state_.get<labelList>("blendFromIndices"));
+        const labelList fromAges(state_.get<labelList>("blendFromAges"));
+        blendFrom_.reset
+        (
+            new dcprbf::DynamicControlSet::State
+            (
+                set_.freshState
+                (
+                    std::vector<Eigen::Index>(from.begin(), from.end()),
+                    std::vector<int>(fromAges.begin(), fromAges.end())
+                )
+            )
+        );
+    }
     Info<< "dcpRBF: restarting with " << set_.size() << " control points from "
         << state_.objectPath() << endl;
     return true;
@@ -130,6 +159,7 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
     ready_(false),
     updated_(false),
     warnedMaxPoints_(false),
+    blendStep_(0),
     state_
     (
         IOobject
@@ -201,7 +231,16 @@ void Foam::dcpRBFControlPoints::solve(const dcprbf::Values& d)
 {
     try
     {
-        set_.solve(d);
+        if (blendFrom_)
+        {
+            const scalar w =
+                scalar(blendStep_)/settings_.selection().swapBlendSteps;
+            set_.solveBlended(d, *blendFrom_, w);
+        }
+        else
+        {
+            set_.solve(d);
+        }
     }
     catch (const dcprbf::Error& e)
     {
@@ -234,9 +273,12 @@ Foam::scalar Foam::dcpRBFControlPoints::boundaryError
 }
 
 
-bool Foam::dcpRBFControlPoints::swapping() const
+bool Foam::dcpRBFControlPoints::swapsBeforeSolve() const
 {
-    return settings_.selection().selection == dcpRBFSelectionSettings::mode::dynamic;
+    const dcpRBFSelectionSettings& s = settings_.selection();
+    return
+        s.selection == dcpRBFSelectionSettings::mode::dynamic
+     && s.swapRule == dcpRBFSelectionSettings::rule::nearest;
 }
 
 
@@ -299,22 +341,34 @@ void Foam::dcpRBFControlPoints::swap
 {
     nAdded = 0;
     nRemoved = 0;
-    if (settings_.selection().selection != dcpRBFSelectionSettings::mode::dynamic)
+    const dcpRBFSelectionSettings& s = settings_.selection();
+    if (s.selection != dcpRBFSelectionSettings::mode::dynamic || s.swapRule != dcpRBFSelectionSettings::rule::nearest)
     {
         return;
     }
-    const label n = settings_.selection().nSwap;
-    for (label k = 0; k < min(n, q.worst.size()); ++k)
+    const auto leaveNear = [&](const dcpRBFQualityRegion::rankedCell& c)
     {
-        if (addNear(q.worst[k])) ++nAdded;
-    }
-    for (label k = 0; k < min(n, q.best.size()); ++k)
+        const Eigen::RowVector3d x(c[1], c[2], c[3]);
+        if (set_.removeNearest(x) < 0) return false;
+        updated_ = true;
+        return true;
+    };
+    const label n = min(s.nSwap, min(q.worst.size(), q.best.size()));
+    for (label k = 0; k < n; ++k)
     {
-        const Eigen::RowVector3d x(q.best[k][1], q.best[k][2], q.best[k][3]);
-        if (set_.removeNearest(x) >= 0)
+        // at maxPoints the leave comes first, so the swap keeps the size
+        if (set_.size() >= s.maxPoints)
         {
-            ++nRemoved;
-            updated_ = true;
+            if (leaveNear(q.best[k]))
+            {
+                ++nRemoved;
+                nAdded += addNear(q.worst[k]);
+            }
+        }
+        else
+        {
+            nAdded += addNear(q.worst[k]);
+            nRemoved += leaveNear(q.best[k]);
         }
     }
 }
@@ -335,13 +389,105 @@ bool Foam::dcpRBFControlPoints::addNear
 }
 
 
+bool Foam::dcpRBFControlPoints::canTrial() const
+{
+    const dcpRBFSelectionSettings& s = settings_.selection();
+    return
+        ready_ && !blendFrom_ && s.nSwap > 0
+     && s.selection == dcpRBFSelectionSettings::mode::dynamic
+     && s.swapRule == dcpRBFSelectionSettings::rule::errorGuided;
+}
+
+
+Foam::label Foam::dcpRBFControlPoints::proposeSwaps
+(
+    const dcpRBFQualityRegion::summary& q,
+    const dcprbf::Values& d
+)
+{
+    // Joining: near each of the worst cells, among the joinNeighbours
+    // nearest candidates, the one the interpolant reproduces worst
+    static const int joinNeighbours = 8;
+    const dcprbf::Values error(d - set_.evaluator().evaluate(boundary_.points()));
+    const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
+
+    // Leaving: the moving control points by what their removal costs
+    const dcprbf::Values loo(set_.leaveOneOutErrors(d));
+    const std::vector<Eigen::Index> leave(set_.removalOrder(loo));
+    std::vector<scalar> looOf(boundary_.size(), 0);
+    for (std::size_t k = 0; k < set_.indices().size(); ++k)
+    {
+        looOf[set_.indices()[k]] = loo.row(k).norm();
+    }
+
+    trialFrom_.reset(new dcprbf::DynamicControlSet::State(set_.state()));
+    label n = 0;
+    std::size_t next = 0;
+    for (label k = 0; k < min(settings_.selection().nSwap, q.worst.size()); ++k)
+    {
+        const Eigen::RowVector3d x(q.worst[k][1], q.worst[k][2], q.worst[k][3]);
+        const Eigen::Index in =
+            set_.mostInaccurateNear(x, error, joinNeighbours, 1e-9*dMax);
+        // a swap that costs more where the point leaves than it gains where
+        // the other joins is not proposed
+        while (in >= 0 && next < leave.size() && looOf[leave[next]] < error.row(in).norm())
+        {
+            if (set_.swap(in, leave[next++]))
+            {
+                ++n;
+                break;
+            }
+        }
+    }
+    if (n == 0)
+    {
+        trialFrom_.reset();
+        return 0;
+    }
+    solve(d);
+    return n;
+}
+
+
+void Foam::dcpRBFControlPoints::keepSwaps(const dcprbf::Values& d)
+{
+    updated_ = true;
+    if (settings_.selection().swapBlendSteps > 1)
+    {
+        blendFrom_ = std::move(trialFrom_);
+        blendStep_ = 1;
+        solve(d);
+    }
+    trialFrom_.reset();
+}
+
+
+void Foam::dcpRBFControlPoints::undoSwaps(const dcprbf::Values& d)
+{
+    set_.restore(*trialFrom_);
+    trialFrom_.reset();
+    solve(d);
+}
+
+
 void Foam::dcpRBFControlPoints::endStep()
 {
     set_.nextStep();
-    if (updated_ && time_.writeTime())
+    if (blendFrom_ && ++blendStep_ >= settings_.selection().swapBlendSteps)
     {
-        set_.refactorize();
-        updated_ = false;
+        blendFrom_.reset();
+    }
+    if (time_.writeTime())
+    {
+        if (updated_)
+        {
+            set_.refactorize();
+            updated_ = false;
+        }
+        if (blendFrom_)
+        {
+            *blendFrom_ = set_.freshState(blendFrom_->indices, blendFrom_->ages);
+        }
     }
     storeState();
 }

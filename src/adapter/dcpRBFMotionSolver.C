@@ -215,16 +215,10 @@ void Foam::dcpRBFMotionSolver::guardQuality
 )
 {
     const scalar floor = settings_.qualityFloor();
-    const label nRanked = max(label(1), settings_.selection().nSwap);
     for (label iter = 0; ; ++iter)
     {
-        lastPoints_ = points0() + pointDisplacement_.primitiveField();
-        twoDCorrectPoints(lastPoints_);
-        lastQuality_ = region_.measure(points0(), lastPoints_, nRanked);
+        measureQuality(r);
         const dcpRBFQualityRegion::summary& q = lastQuality_;
-        r.nCells = q.nCells;
-        r.minQuality = q.minQuality;
-        r.meanQuality = q.meanQuality;
 
         if (q.minQuality >= floor || q.worst.empty())
         {
@@ -262,6 +256,63 @@ void Foam::dcpRBFMotionSolver::guardQuality
             << " (quality <= 0, minimum " << r.minQuality << "). The mesh is"
             << " invalid: reduce the motion per step, enlarge supportRadius"
             << " or use selection dynamic with a qualityFloor." << endl;
+    }
+}
+
+
+void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
+{
+    lastPoints_ = points0() + pointDisplacement_.primitiveField();
+    twoDCorrectPoints(lastPoints_);
+    lastQuality_ =
+        region_.measure(points0(), lastPoints_, max(label(1), settings_.selection().nSwap));
+    r.nCells = lastQuality_.nCells;
+    r.minQuality = lastQuality_.minQuality;
+    r.meanQuality = lastQuality_.meanQuality;
+}
+
+
+void Foam::dcpRBFMotionSolver::trySwaps
+(
+    const dcprbf::Values& d,
+    dcpRBFStepLog::record& r
+)
+{
+    const dcpRBFQualityRegion::summary q0(lastQuality_);
+    if (!controlPoints_.canTrial() || q0.worst.empty() || q0.minQuality >= 1 - 1e-12)
+    {
+        return;
+    }
+    const label n = controlPoints_.proposeSwaps(q0, d);
+    if (!n)
+    {
+        return;
+    }
+    const vectorField field0(pointDisplacement_.primitiveField());
+    const pointField points0Copy(lastPoints_);
+    const dcpRBFStepLog::record r0(r);
+    r.boundaryError = interpolateDisplacement(d);
+    measureQuality(r);
+    if (lastQuality_.minQuality > q0.minQuality)
+    {
+        r.nAdded += n;
+        r.nRemoved += n;
+        controlPoints_.keepSwaps(d);
+        if (settings_.selection().swapBlendSteps > 1)
+        {
+            // the first blend step, not the whole swap
+            r.boundaryError = interpolateDisplacement(d);
+            measureQuality(r);
+        }
+    }
+    else
+    {
+        controlPoints_.undoSwaps(d);
+        pointDisplacement_.primitiveFieldRef() = field0;
+        lastPoints_ = points0Copy;
+        lastQuality_ = q0;
+        r = r0;
+        r.nUndone += n;
     }
 }
 
@@ -376,8 +427,8 @@ void Foam::dcpRBFMotionSolver::solve()
     clockTime timer;
     dcpRBFStepLog::record r;
 
-    // 1. Dynamic swaps from the quality of the mesh as it is
-    if (controlPoints_.ready() && controlPoints_.swapping())
+    // 1. swapRule nearest: swaps from the quality of the mesh as it is
+    if (controlPoints_.ready() && controlPoints_.swapsBeforeSolve())
     {
         const dcpRBFQualityRegion::summary& q = currentQuality();
         if (q.minQuality < 1 - 1e-12)
@@ -402,6 +453,10 @@ void Foam::dcpRBFMotionSolver::solve()
         r.interpolateTime = timer.timeIncrement();
         guardQuality(d, r);
         r.guardTime = timer.timeIncrement();
+
+        // 5. swapRule errorGuided: a trial swap, kept if it helps
+        trySwaps(d, r);
+        r.swapTime += timer.timeIncrement();
 
         r.nControl = controlPoints_.size();
         controlPoints_.endStep();

@@ -22,10 +22,18 @@ Foam::dcpRBFSelectionSettings::targetNames
     {target::unit, "unit"}
 });
 
+const Foam::Enum<Foam::dcpRBFSelectionSettings::rule>
+Foam::dcpRBFSelectionSettings::ruleNames
+({
+    {rule::errorGuided, "errorGuided"},
+    {rule::nearest, "nearest"}
+});
+
 const Foam::wordList Foam::dcpRBFSelectionSettings::keywords
 ({
     "selection", "tolerance", "minPoints", "maxPoints", "doubleEdged",
-    "selectOn", "reselectTolerance", "nSwap", "protectSteps"
+    "selectOn", "reselectTolerance", "nSwap", "protectSteps", "swapRule",
+    "swapBlendSteps"
 });
 
 
@@ -52,6 +60,14 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
         r.getScalar("reselectTolerance", min(10*tolerance, 1.0), tolerance, GREAT);
     nSwap = r.getLabel("nSwap", 1, 0, 1000);
     protectSteps = r.getLabel("protectSteps", 3, 0, 1000000);
+    swapRule = r.getEnum("swapRule", ruleNames, rule::errorGuided);
+    swapBlendSteps = r.getLabel("swapBlendSteps", 4, 1, 1000);
+    if (swapRule == rule::nearest && dict.found("swapBlendSteps"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword swapBlendSteps has no effect with swapRule nearest."
+            << " It belongs to swapRule errorGuided" << exit(FatalIOError);
+    }
 
     if (selection == mode::all)
     {
@@ -68,7 +84,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     }
     if (selection != mode::dynamic)
     {
-        for (const word k : {"nSwap", "protectSteps"})
+        for (const word k : {"nSwap", "protectSteps", "swapRule", "swapBlendSteps"})
         {
             if (dict.found(k))
             {

@@ -19,7 +19,8 @@ Foam::dcpRBFStepLog::dcpRBFStepLog(const Time& runTime)
 void Foam::dcpRBFStepLog::write(const record& r)
 {
     Info<< "dcpRBF: control points " << r.nControl << " (+" << r.nAdded
-        << " -" << r.nRemoved << ", guard +" << r.nGuard << "), quality min "
+        << " -" << r.nRemoved << ", guard +" << r.nGuard
+        << (r.nUndone ? ", trial swap undone" : "") << "), quality min "
         << r.minQuality << " mean " << r.meanQuality << " (" << r.nCells
         << " cells in reach), boundary error " << r.boundaryError
         << (r.atMaxPoints ? " (at maxPoints)" : "")
@@ -44,7 +45,7 @@ void Foam::dcpRBFStepLog::write(const record& r)
             << "# dcpRBF motion solver, one row per step" << nl
             << "# time nControl nAdded nRemoved nGuard nCells minQuality"
             << " meanQuality boundaryError atMaxPoints swapTime selectTime"
-            << " interpolateTime guardTime" << endl;
+            << " interpolateTime guardTime nUndone" << endl;
     }
     file_()
         << time_.timeName() << ' ' << r.nControl << ' ' << r.nAdded << ' '
@@ -52,7 +53,7 @@ void Foam::dcpRBFStepLog::write(const record& r)
         << r.minQuality << ' ' << r.meanQuality << ' ' << r.boundaryError
         << ' ' << label(r.atMaxPoints) << ' ' << r.swapTime << ' '
         << r.selectTime << ' ' << r.interpolateTime << ' ' << r.guardTime
-        << endl;
+        << ' ' << r.nUndone << endl;
 }
 
 

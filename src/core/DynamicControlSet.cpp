@@ -210,6 +210,27 @@ void DynamicControlSet::solve(const Values& candidateValues)
     evaluator_.assign(solver_.centres(), alpha, beta);
 }
 
+DynamicControlSet::State DynamicControlSet::freshState
+(
+    const std::vector<Eigen::Index>& indices,
+    const std::vector<int>& ages
+) const
+{
+    Points c(indices.size(), 3);
+    for (std::size_t k = 0; k < indices.size(); ++k)
+    {
+        if (indices[k] < 0 || indices[k] >= candidates_.rows())
+        {
+            throw Error("control point index out of range");
+        }
+        c.row(k) = candidates_.row(indices[k]);
+    }
+    IncrementalSaddleSolver s(solver_.kernel(), solver_.polynomial());
+    s.reset(c);
+    return State{s, indices, ages};
+}
+
+
 void DynamicControlSet::restore(const State& s)
 {
     solver_ = s.solver;
@@ -248,13 +269,15 @@ Eigen::Index DynamicControlSet::mostInaccurateNear
     const std::vector<Eigen::Index> near =
         nearestFirst(x, all, [&](Eigen::Index j) { return !inSet_[j]; });
     Eigen::Index best = -1;
-    double worst = floor;
+    double bestScore = 0;
     for (std::size_t r = 0; r < near.size() && r < std::size_t(k); ++r)
     {
         const double e = error.row(near[r]).norm();
-        if (e > worst)
+        const double d = (candidates_.row(near[r]) - x).norm();
+        const double score = e/std::max(d, 1e-300);
+        if (e > floor && score > bestScore)
         {
-            worst = e;
+            bestScore = score;
             best = near[r];
         }
     }

@@ -16,7 +16,8 @@
 //    (also at maxPoints).
 // Error-guided swaps (the adapter's swapRule errorGuided) use:
 //  - mostInaccurateNear(x): among the k candidates nearest to x that are not
-//    control points, the one the interpolant reproduces worst;
+//    control points, the one of largest |error| / distance to x (an error
+//    distorts the cells within reach of it: the nearer, the more);
 //  - removalOrder(): removable, old-enough control points by ascending
 //    leave-one-out error (Rippa 1999: alpha_j / B_jj, all at once from the
 //    factorization), i.e. what their removal would cost at their own place;
@@ -100,6 +101,14 @@ public:
         std::vector<int> ages;
     };
     State state() const { return State{solver_, indices_, age_}; }
+
+    //- The state of the set with these indices and ages, factorized from
+    //  scratch (O(N^3)); the set itself is unchanged
+    State freshState
+    (
+        const std::vector<Eigen::Index>& indices,
+        const std::vector<int>& ages
+    ) const;
     void restore(const State& s);
 
     //- Leave-one-out errors at the centres (rows in the solver's order) of
@@ -107,7 +116,8 @@ public:
     Values leaveOneOutErrors(const Values& candidateValues) const;
 
     //- Among the k non-member candidates nearest to x, the one of largest
-    //  |error| (rows: candidates), if above floor; else -1
+    //  |error| / |x_i - x| (rows: candidates) whose |error| is above floor;
+    //  else -1
     Eigen::Index mostInaccurateNear
     (
         const Eigen::RowVector3d& x,

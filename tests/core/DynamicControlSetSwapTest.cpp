@@ -121,14 +121,16 @@ TEST_F(SwapFixture, JoinsTheWorstOfTheNearestAndLeavesTheCheapest)
     }
     std::sort(byDistance.begin(), byDistance.end());
     Index expected = -1;
-    double worst = 0;
+    double best = 0, largest = 0;
     for (int r = 0; r < kNear; ++r)
     {
         const double e = error.row(byDistance[r].second).norm();
-        if (e > worst) { worst = e; expected = byDistance[r].second; }
+        const double score = e/std::sqrt(byDistance[r].first);
+        if (score > best) { best = score; expected = byDistance[r].second; }
+        largest = std::max(largest, e);
     }
     EXPECT_EQ(s.mostInaccurateNear(x, error, kNear, 0.0), expected);
-    EXPECT_EQ(s.mostInaccurateNear(x, error, kNear, worst), -1);   // nothing above the floor
+    EXPECT_EQ(s.mostInaccurateNear(x, error, kNear, largest), -1);   // nothing above the floor
 
     const Values loo = s.leaveOneOutErrors(v);
     const std::vector<Index> order = s.removalOrder(loo);

@@ -193,7 +193,7 @@ TEST(MaxPoints, ReachedWithErrorAboveToleranceIsMarked)
 // every step and the mesh stays valid
 TEST(DynamicSwaps, HappenOverStepsAndKeepTheWallExact)
 {
-    testCase c(2, 12, patches + " controlPoints { selection dynamic; tolerance 1e-2; protectSteps 1; }");
+    testCase c(2, 12, patches + " controlPoints { selection dynamic; swapRule nearest; tolerance 1e-2; protectSteps 1; }");
     autoPtr<motionSolver> ms(select(c));
     auto& solver = refCast<dcpRBFMotionSolver>(ms());
     const pointField p0(solver.points0());
@@ -236,6 +236,71 @@ TEST(DynamicSwaps, HappenOverStepsAndKeepTheWallExact)
     const auto& idx = solver.controlPoints().set().indices();
     const std::set<Eigen::Index> last(idx.begin(), idx.end());
     EXPECT_NE(first, last) << "the control set never changed";
+}
+
+//- Minimum quality per step of a growing bump on the bottom wall
+std::vector<double> minQualityPerStep(const std::string& controlPoints, label nSteps,
+    std::vector<std::vector<double>>* rowsOut = nullptr)
+{
+    // a boundary layer: cells 30 times thinner at the bottom wall than at
+    // the top, where a reduced set's boundary error folds them first
+    testCase c(2, 16, patches + " boundaryCorrection false; guardIterations 0;"
+        " controlPoints { " + controlPoints + " }", "wall",
+        "{ type fixedValue; value uniform (0 0 0); }", "(1 30 1)");
+    autoPtr<motionSolver> ms(select(c));
+    auto& solver = refCast<dcpRBFMotionSolver>(ms());
+    for (label step = 1; step <= nSteps; ++step)
+    {
+        ++c.runTime();
+        const scalar a = 0.04*step;
+        prescribe(solver.pointDisplacement(), "bottom", [a](const point& x)
+        {
+            return vector(0, a*std::sin(2*constant::mathematical::pi*x.x()), 0);
+        });
+        c.mesh().movePoints(ms->newPoints());
+    }
+    const auto rows = stepRows(c);
+    if (rowsOut) *rowsOut = rows;
+    std::vector<double> q;
+    for (const auto& row : rows) q.push_back(row[cMinQ]);
+    return q;
+}
+
+// The error-guided rule at fixed N (the paper's setting: no correction, no
+// re-selection) keeps a swap only if it raises the step's minimum quality:
+// swaps happen, and the mesh is never worse than with the static set
+TEST(ErrorGuidedSwaps, NeverWorseThanTheStaticSetAtFixedN)
+{
+    const std::string fixedN =
+        "tolerance 1e-12; minPoints 12; maxPoints 12; reselectTolerance 1e9;";
+    const label nSteps = 8;
+    const std::vector<double> greedy(minQualityPerStep("selection greedy; " + fixedN, nSteps));
+    std::vector<std::vector<double>> rows;
+    const std::vector<double> dynamic
+    (
+        minQualityPerStep
+        (
+            "selection dynamic; swapRule errorGuided; swapBlendSteps 1; protectSteps 0; " + fixedN,
+            nSteps, &rows
+        )
+    );
+    ASSERT_EQ(label(greedy.size()), nSteps);
+    ASSERT_EQ(label(dynamic.size()), nSteps);
+    double kept = 0;
+    for (label s = 0; s < nSteps; ++s)
+    {
+        EXPECT_GE(dynamic[s], greedy[s] - 1e-12) << "step " << s + 1;
+        EXPECT_EQ(rows[s][cControl], 12) << "constant N";
+        kept += rows[s][cAdded];
+    }
+    // most of the way from the static set's quality to full RBF's
+    const std::vector<double> all(minQualityPerStep("selection all;", nSteps));
+    EXPECT_GT(kept, 0) << "no swap was kept";
+    EXPECT_GT(dynamic.back(), greedy.back()) << "the swaps did not pay off";
+    for (label s = 1; s < nSteps; ++s)
+    {
+        EXPECT_GT(dynamic[s], greedy[s] + 0.5*(all[s] - greedy[s])) << "step " << s + 1;
+    }
 }
 
 } // namespace

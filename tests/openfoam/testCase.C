@@ -31,7 +31,8 @@ Foam::dcpRBFTest::testCase::testCase
     label n,
     const string& coeffs,
     const word& frontBack,
-    const string& bottomBC
+    const string& bottomBC,
+    const string& grading
 )
 {
     char tmpl[] = "/tmp/dcpRBFTest-XXXXXX";
@@ -45,7 +46,7 @@ Foam::dcpRBFTest::testCase::testCase
         << "(0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 " << zMax << ") (1 0 " << zMax
         << ") (1 1 " << zMax << ") (0 1 " << zMax << "));\n"
         << "blocks (hex (0 1 2 3 4 5 6 7) (" << n << ' ' << n << ' ' << nz
-        << ") simpleGrading (1 1 1));\nedges ();\nboundary (\n"
+        << ") simpleGrading " << grading.c_str() << ");\nedges ();\nboundary (\n"
         << " left { type patch; faces ((0 4 7 3)); }\n"
         << " right { type patch; faces ((1 2 6 5)); }\n"
         << " bottom { type wall; faces ((0 1 5 4)); }\n"
