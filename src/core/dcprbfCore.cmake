@@ -3,9 +3,27 @@
 # project(); OpenFOAM builds the same sources with wmake (src/Make/files).
 include_guard(GLOBAL)
 
-#- The warning flags of every target of the core, tests and benchmarks
+# Warnings: dcprbf_warnings(<target>) compiles a target of the core, the test
+# reference library, the tests or the benchmarks with
+#     -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Woverloaded-virtual
+# and with -Werror when warnings are errors, i.e. when
+#   - the option DCPRBF_WERROR is ON (cmake -DDCPRBF_WERROR=ON; default OFF), or
+#   - the environment variable CI is set and non-empty when cmake configures
+#     (CI runs `bash .ci/run` with CI=true).
+option(DCPRBF_WERROR "Treat compiler warnings as errors (also on when the environment variable CI is set)" OFF)
+if(DCPRBF_WERROR OR (DEFINED ENV{CI} AND NOT "$ENV{CI}" STREQUAL ""))
+    set(DCPRBF_WARNINGS_AS_ERRORS ON)
+else()
+    set(DCPRBF_WARNINGS_AS_ERRORS OFF)
+endif()
+message(STATUS "dcpRBF: warnings as errors: ${DCPRBF_WARNINGS_AS_ERRORS}")
+
 function(dcprbf_warnings target)
-    target_compile_options(${target} PRIVATE -Wall -Wextra)
+    target_compile_options(${target} PRIVATE
+        -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Woverloaded-virtual)
+    if(DCPRBF_WARNINGS_AS_ERRORS)
+        target_compile_options(${target} PRIVATE -Werror)
+    endif()
 endfunction()
 
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)

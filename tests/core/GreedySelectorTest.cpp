@@ -174,12 +174,14 @@ INSTANTIATE_TEST_SUITE_P
     KernelsPolyDimEdges,
     GreedyCase,
     ::testing::ValuesIn(allCases()),
-    [](const ::testing::TestParamInfo<Case>& info)
+    // (not named "info": INSTANTIATE_TEST_SUITE_P has a parameter of that
+    // name, -Wshadow)
+    [](const ::testing::TestParamInfo<Case>& p)
     {
-        return std::get<0>(info.param)
-            + (std::get<1>(info.param) ? "_poly" : "_noPoly")
-            + "_" + std::to_string(std::get<2>(info.param)) + "D"
-            + (std::get<3>(info.param) ? "_double" : "_single");
+        return std::get<0>(p.param)
+            + (std::get<1>(p.param) ? "_poly" : "_noPoly")
+            + "_" + std::to_string(std::get<2>(p.param)) + "D"
+            + (std::get<3>(p.param) ? "_double" : "_single");
     }
 );
 
