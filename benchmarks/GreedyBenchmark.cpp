@@ -1,8 +1,9 @@
 // Greedy selection of N control points among the surface points:
 // incremental (GreedySelector::select) against the naive re-solve per added
-// point (GreedySelector::selectNaive), both measured to the end.
+// point (selectNaive, tests/core/reference), both measured to the end.
 #include "Benchmarks.hpp"
 #include "GreedySelector.hpp"
+#include "NaiveGreedyModel.hpp"
 #include "Timing.hpp"
 
 #include <cstdio>
@@ -38,7 +39,7 @@ void benchmarkGreedy(const Setup& s)
             });
             const double tNaive = seconds([&]
             {
-                b.reset(new GreedyResult(g.selectNaive(s.surface, s.displacement)));
+                b.reset(new GreedyResult(selectNaive(g, s.surface, s.displacement)));
             });
             const GreedyResult& inc = *a;
             const GreedyResult& ref = *b;

@@ -3,17 +3,21 @@
 //
 // A model holds the candidates x_i and their displacements d_i and, for the
 // selected subset C (in selection order), the interpolant s_C of d on C. It
-// reports the residual e_i = d_i - s_C(x_i) at every candidate. Two models:
-// IncrementalGreedyModel (O(N Nb) per added point) and NaiveGreedyModel (a
-// fresh saddle-point solve and evaluation per change, reference only).
+// reports the residual e_i = d_i - s_C(x_i) at every candidate. The
+// production model is IncrementalGreedyModel (O(N Nb) per added point); the
+// tests and benchmarks have a reference one (tests/core/reference:
+// NaiveGreedyModel, a fresh saddle-point solve and evaluation per change).
 #pragma once
 
 #include "Types.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace dcprbf
 {
+
+class SaddleFactorization;
 
 class GreedyModel
 {
@@ -30,6 +34,13 @@ public:
     //- Kernel weights (row j for the j-th selected point) and polynomial
     //  coefficients of s_C
     virtual void coefficients(Values& alpha, Eigen::MatrixX3d& beta) const = 0;
+
+    //- Hand over the factorization of the selected set, if the model keeps
+    //  one (null otherwise); the model is unusable afterwards
+    virtual std::unique_ptr<SaddleFactorization> releaseFactorization()
+    {
+        return nullptr;
+    }
 };
 
 } // namespace dcprbf

@@ -1,6 +1,5 @@
 #include "GreedySelector.hpp"
 #include "IncrementalGreedyModel.hpp"
-#include "NaiveGreedyModel.hpp"
 #include "PointSetChecks.hpp"
 
 #include <Eigen/QR>
@@ -184,27 +183,35 @@ std::vector<Eigen::Index> GreedySelector::seed
 
 GreedyResult GreedySelector::select(const Points& x, const Values& d) const
 {
-    checkInput(x, d);
-    const LinearPolynomial frame = LinearPolynomial::boundingBox(polynomial_, dim_, x);
-    GreedyResult result(frame);
-    IncrementalGreedyModel model(kernel_, frame, x, d);
-    run(model, seed(x, d), d, result);
-    result.factorization = model.releaseFactorization();
-    for (std::size_t j = 0; j < result.selected.size(); ++j)
-    {
-        result.centres.row(j) = x.row(result.selected[j]);
-    }
-    return result;
+    return run
+    (
+        [](const RadialKernel& kernel, const LinearPolynomial& frame,
+           const Points& candidates, const Values& displacements)
+        {
+            return std::unique_ptr<GreedyModel>
+            (
+                new IncrementalGreedyModel(kernel, frame, candidates, displacements)
+            );
+        },
+        x,
+        d
+    );
 }
 
 
-GreedyResult GreedySelector::selectNaive(const Points& x, const Values& d) const
+GreedyResult GreedySelector::run
+(
+    const ModelFactory& makeModel,
+    const Points& x,
+    const Values& d
+) const
 {
     checkInput(x, d);
     const LinearPolynomial frame = LinearPolynomial::boundingBox(polynomial_, dim_, x);
     GreedyResult result(frame);
-    NaiveGreedyModel model(kernel_, frame, x, d);
-    run(model, seed(x, d), d, result);
+    const std::unique_ptr<GreedyModel> model = makeModel(kernel_, frame, x, d);
+    iterate(*model, seed(x, d), d, result);
+    result.factorization = model->releaseFactorization();
     for (std::size_t j = 0; j < result.selected.size(); ++j)
     {
         result.centres.row(j) = x.row(result.selected[j]);
@@ -213,7 +220,7 @@ GreedyResult GreedySelector::selectNaive(const Points& x, const Values& d) const
 }
 
 
-void GreedySelector::run
+void GreedySelector::iterate
 (
     GreedyModel& model,
     const std::vector<Eigen::Index>& seed,

@@ -12,11 +12,12 @@
 //      double-edged: also the largest |e_j| among those with e_j . e_w < 0
 //      (the "other edge" of the error), both from the same residual; go to 2.
 //
-// select() runs it incrementally (IncrementalGreedyModel: one new row of the
+// run() drives this loop on any GreedyModel. select(), the production entry
+// point, runs it incrementally (IncrementalGreedyModel: one new row of the
 // Cholesky factor and one Newton basis column, O(N Nb) per point, nothing
-// re-solved); selectNaive() re-solves the whole system per iteration
-// (NaiveGreedyModel, O(N^3 + N Nb)), as a reference for tests and benchmarks.
-// Both share this loop, so they differ only in round-off.
+// re-solved). The tests and benchmarks run the same loop on a reference model
+// that re-solves the whole system per iteration (tests/core/reference), so the
+// two differ only in round-off.
 //
 // The polynomial frame is the bounding box of the candidates
 // (LinearPolynomial::boundingBox), beta is written in it.
@@ -27,6 +28,7 @@
 #include "RadialKernel.hpp"
 #include "SaddleFactorization.hpp"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -79,9 +81,9 @@ struct GreedyResult
     //- max_i |d_i| (the error scale)
     double maxDisplacement = 0;
 
-    //- select() only: the factorization of the selected set, ready for
-    //  IncrementalSaddleSolver(std::move(*factorization)); null from
-    //  selectNaive()
+    //- select(): the factorization of the selected set, ready for
+    //  IncrementalSaddleSolver(std::move(*factorization)); null from models
+    //  that keep none (GreedyModel::releaseFactorization)
     std::unique_ptr<SaddleFactorization> factorization;
 };
 
@@ -89,6 +91,19 @@ struct GreedyResult
 class GreedySelector
 {
 public:
+    //- Makes the model run() drives, for the (checked) candidates and
+    //  displacements, in the polynomial frame of the result
+    using ModelFactory = std::function
+    <
+        std::unique_ptr<GreedyModel>
+        (
+            const RadialKernel& kernel,
+            const LinearPolynomial& frame,
+            const Points& candidates,
+            const Values& displacements
+        )
+    >;
+
     //- Throws Error for inconsistent options (tolerance <= 0, maxPoints <
     //  minPoints, ...) or kernel settings (TPS without polynomial, dim)
     GreedySelector
@@ -104,9 +119,14 @@ public:
     //  the polynomial, a candidate numerically dependent on the selected ones)
     GreedyResult select(const Points& candidates, const Values& displacements) const;
 
-    //- The same selection re-solving the full system per iteration
-    //  (reference: tests and benchmarks only)
-    GreedyResult selectNaive(const Points& candidates, const Values& displacements) const;
+    //- The selection on the model made by makeModel (select() is run() on an
+    //  IncrementalGreedyModel): the same input checks, seed and loop
+    GreedyResult run
+    (
+        const ModelFactory& makeModel,
+        const Points& candidates,
+        const Values& displacements
+    ) const;
 
     //- The automatic seed. Without the polynomial: the candidate of largest
     //  |d|. With it, dim + 1 points spanning a well-shaped simplex: the one of
@@ -124,8 +144,8 @@ public:
 private:
     void checkInput(const Points& candidates, const Values& displacements) const;
 
-    //- The loop, on either model
-    void run
+    //- The loop
+    void iterate
     (
         GreedyModel& model,
         const std::vector<Eigen::Index>& seed,

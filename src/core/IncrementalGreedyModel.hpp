@@ -55,7 +55,7 @@ public:
     const SaddleFactorization& factorization() const { return *f_; }
 
     //- Hand the factorization over (the model is unusable afterwards)
-    std::unique_ptr<SaddleFactorization> releaseFactorization()
+    std::unique_ptr<SaddleFactorization> releaseFactorization() override
     {
         return std::move(f_);
     }

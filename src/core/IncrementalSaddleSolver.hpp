@@ -75,13 +75,8 @@ public:
     const RadialKernel& kernel() const { return f_.kernel().kernel(); }
     const LinearPolynomial& polynomial() const { return f_.polynomial(); }
 
-    //- The shift c of the augmented kernel (0 unless TPS)
-    double shift() const { return f_.kernel().shift(); }
-
     //- Number of O(N^3) factorizations so far
     int factorizations() const { return f_.factorizations(); }
-
-    const SaddleFactorization& factorization() const { return f_; }
 
 private:
     //- Index of a centre within round-off distance of x, or -1

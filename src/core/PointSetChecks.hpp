@@ -1,6 +1,7 @@
 // dcpRBF numerical core: validation of control/candidate point sets, shared
-// by RbfInterpolant, IncrementalSaddleSolver and GreedySelector so that the
-// same input gives the same Error message everywhere.
+// by IncrementalSaddleSolver, GreedySelector and the tests' reference
+// RbfInterpolant so that the same input gives the same Error message
+// everywhere.
 //
 // Two points coincide when closer than 1e-10 x the diagonal of the set's
 // bounding box (round-off distance: their kernel rows would be identical).

@@ -26,7 +26,6 @@ public:
     PointTree& operator=(const PointTree&) = delete;
 
     std::size_t size() const { return adaptor_.points.rows(); }
-    const Points& points() const { return adaptor_.points; }
 
     //- Index of the nearest point to q (the tree must not be empty), and
     //  its squared distance in distSq

@@ -205,7 +205,6 @@ public:
     //- The accepted names, in Type order
     static const std::vector<std::string>& names();
 
-    Type type() const { return type_; }
     const std::string& name() const;
     double radius() const { return radius_; }
 

@@ -120,9 +120,11 @@ void RbfEvaluator::addPolynomial(const double* x, double* out) const
 void RbfEvaluator::evaluateTree(const double* x, std::size_t n, double* out) const
 {
     const double R = kernel_.radius();
-    const double* a = alpha_.data();
     kernel_.visit([&](const auto& phi)
     {
+        // declared here, not in the enclosing function: clang (14) cannot
+        // capture the latter in the inner lambda of this OpenMP loop
+        const double* a = alpha_.data();
         #pragma omp parallel for schedule(dynamic, 256)
         for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i)
         {

@@ -41,7 +41,7 @@ public:
     RbfEvaluator(const RadialKernel& kernel, const LinearPolynomial& polynomial);
 
     //- Set the centres (N x 3), weights (N x 3) and polynomial coefficients
-    //  (polynomial().size() x 3, in polynomial()'s frame)
+    //  (polynomial.size() x 3, in the constructor's polynomial frame)
     void assign
     (
         const Points& centres,
@@ -51,7 +51,6 @@ public:
 
     //- Force a method (Tree for a global kernel means Dense)
     void setMethod(Method m) { method_ = m; }
-    Method method() const { return method_; }
 
     //- Evaluate at n points x (row-major xyz) into out (row-major), threaded
     void evaluate(const double* x, std::size_t n, double* out) const;
@@ -67,10 +66,7 @@ public:
 
     std::size_t size() const { return centres_.rows(); }
     const RadialKernel& kernel() const { return kernel_; }
-    const LinearPolynomial& polynomial() const { return polynomial_; }
     const Points& centres() const { return centres_; }
-    const Values& weights() const { return alpha_; }
-    const Eigen::MatrixX3d& polynomialCoeffs() const { return beta_; }
 
 private:
     void evaluateTree(const double* x, std::size_t n, double* out) const;

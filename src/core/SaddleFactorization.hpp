@@ -77,7 +77,6 @@ public:
 
     Eigen::Index size() const { return n_; }
     Points centres() const { return centres_.topRows(n_); }
-    const double* centre(Eigen::Index i) const { return centres_.row(i).data(); }
     const AugmentedKernel& kernel() const { return kernel_; }
     const LinearPolynomial& polynomial() const { return kernel_.polynomial(); }
     const UpdatableCholesky& factor() const { return L_; }

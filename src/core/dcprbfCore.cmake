@@ -1,13 +1,38 @@
 # The OpenFOAM-free core as a CMake static library "dcprbfCore", for the unit
 # tests (tests/core) and the benchmarks (benchmarks). include() it after
 # project(); OpenFOAM builds the same sources with wmake (src/Make/files).
+include_guard(GLOBAL)
+
+# Warnings: dcprbf_warnings(<target>) compiles a target of the core, the test
+# reference library, the tests or the benchmarks with
+#     -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Woverloaded-virtual
+# and with -Werror when warnings are errors, i.e. when
+#   - the option DCPRBF_WERROR is ON (cmake -DDCPRBF_WERROR=ON; default OFF), or
+#   - the environment variable CI is set and non-empty when cmake configures
+#     (CI runs `bash .ci/run` with CI=true).
+option(DCPRBF_WERROR "Treat compiler warnings as errors (also on when the environment variable CI is set)" OFF)
+if(DCPRBF_WERROR OR (DEFINED ENV{CI} AND NOT "$ENV{CI}" STREQUAL ""))
+    set(DCPRBF_WARNINGS_AS_ERRORS ON)
+else()
+    set(DCPRBF_WARNINGS_AS_ERRORS OFF)
+endif()
+message(STATUS "dcpRBF: warnings as errors: ${DCPRBF_WARNINGS_AS_ERRORS}")
+
+function(dcprbf_warnings target)
+    target_compile_options(${target} PRIVATE
+        -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Woverloaded-virtual)
+    if(DCPRBF_WARNINGS_AS_ERRORS)
+        target_compile_options(${target} PRIVATE -Werror)
+    endif()
+endfunction()
+
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(OpenMP REQUIRED)
 
 file(GLOB DCPRBF_CORE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/*.cpp)
 add_library(dcprbfCore STATIC ${DCPRBF_CORE_SOURCES})
 target_include_directories(dcprbfCore PUBLIC ${CMAKE_CURRENT_LIST_DIR})
-target_compile_options(dcprbfCore PRIVATE -Wall -Wextra)
+dcprbf_warnings(dcprbfCore)
 # the core is also built by wmake for OpenFOAM v1912, whose default is C++14
 set_target_properties(dcprbfCore PROPERTIES CXX_STANDARD 14)
 target_link_libraries(dcprbfCore PUBLIC Eigen3::Eigen OpenMP::OpenMP_CXX)

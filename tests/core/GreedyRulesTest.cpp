@@ -1,6 +1,7 @@
 // GreedySelector: seed, stopping rules (tolerance, minPoints, maxPoints, all
 // candidates) and every error path.
 #include "GreedySelector.hpp"
+#include "NaiveGreedyModel.hpp"
 #include "TestPoints.hpp"
 
 #include <gtest/gtest.h>
@@ -145,7 +146,7 @@ TEST(GreedyRules, InputErrors)
     Points flat = x;
     flat.col(2).setConstant(0.3);
     expectMessage([&] { g.select(flat, d); }, "coplanar");
-    expectMessage([&] { g.selectNaive(flat, d); }, "coplanar");
+    expectMessage([&] { selectNaive(g, flat, d); }, "coplanar");
     EXPECT_NO_THROW(make(options(1e-3, 0, 10), false).select(flat, d));
 
     // 2D: collinear candidates, and z must be 0

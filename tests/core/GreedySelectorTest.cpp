@@ -2,6 +2,7 @@
 // points as the naive re-solving reference with the same coefficients; the
 // stopping rules; the models' invariants.
 #include "GreedySelector.hpp"
+#include "NaiveGreedyModel.hpp"
 #include "IncrementalGreedyModel.hpp"
 #include "IncrementalSaddleSolver.hpp"
 #include "RbfEvaluator.hpp"
@@ -59,7 +60,7 @@ TEST_P(GreedyCase, IncrementalPicksSameAsNaive)
     const Values d = field(x);
     const GreedySelector g = make(1e-9, 70);
     const GreedyResult inc = g.select(x, d);
-    const GreedyResult ref = g.selectNaive(x, d);
+    const GreedyResult ref = selectNaive(g, x, d);
 
     ASSERT_EQ(inc.selected, ref.selected);
     EXPECT_EQ(inc.selected.size(), 70u);  // the tolerance is out of reach
@@ -173,12 +174,14 @@ INSTANTIATE_TEST_SUITE_P
     KernelsPolyDimEdges,
     GreedyCase,
     ::testing::ValuesIn(allCases()),
-    [](const ::testing::TestParamInfo<Case>& info)
+    // (not named "info": INSTANTIATE_TEST_SUITE_P has a parameter of that
+    // name, -Wshadow)
+    [](const ::testing::TestParamInfo<Case>& p)
     {
-        return std::get<0>(info.param)
-            + (std::get<1>(info.param) ? "_poly" : "_noPoly")
-            + "_" + std::to_string(std::get<2>(info.param)) + "D"
-            + (std::get<3>(info.param) ? "_double" : "_single");
+        return std::get<0>(p.param)
+            + (std::get<1>(p.param) ? "_poly" : "_noPoly")
+            + "_" + std::to_string(std::get<2>(p.param)) + "D"
+            + (std::get<3>(p.param) ? "_double" : "_single");
     }
 );
 

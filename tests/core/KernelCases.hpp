@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -29,6 +30,21 @@ inline std::vector<KernelCase> kernelCases()
             if (name == "TPS" && !poly) continue;
             for (int dim : {2, 3}) cases.emplace_back(name, poly, dim);
         }
+    }
+    return cases;
+}
+
+//- The cases for which keep(case) holds, for tests that apply to only some
+//  of them (instantiate those over this list instead of returning early)
+inline std::vector<KernelCase> kernelCases
+(
+    const std::function<bool(const KernelCase&)>& keep
+)
+{
+    std::vector<KernelCase> cases;
+    for (const KernelCase& c : kernelCases())
+    {
+        if (keep(c)) cases.push_back(c);
     }
     return cases;
 }

@@ -1,4 +1,5 @@
-// dcpRBF numerical core: the reference model of the greedy selection. Every
+// dcpRBF test reference (not in libdcpRBF): the reference model of the greedy
+// selection, and selectNaive(), GreedySelector's loop run on it. Every
 // change of the selected set C assembles and solves the whole saddle system
 // again (SaddleSolver: Cholesky + Schur complement, LU for TPS; O(N^3)) and
 // evaluates the interpolant at every candidate (RbfEvaluator; O(N Nb)).
@@ -7,6 +8,7 @@
 #pragma once
 
 #include "GreedyModel.hpp"
+#include "GreedySelector.hpp"
 #include "LinearPolynomial.hpp"
 #include "RadialKernel.hpp"
 
@@ -39,5 +41,15 @@ private:
     Eigen::MatrixX3d beta_;
     Values residual_;
 };
+
+
+//- The selection of selector.select() re-solving the full system per
+//  iteration: selector.run() on a NaiveGreedyModel (no factorization)
+GreedyResult selectNaive
+(
+    const GreedySelector& selector,
+    const Points& candidates,
+    const Values& displacements
+);
 
 } // namespace dcprbf

@@ -59,4 +59,24 @@ void NaiveGreedyModel::coefficients(Values& alpha, Eigen::MatrixX3d& beta) const
     beta = beta_;
 }
 
+
+GreedyResult selectNaive
+(
+    const GreedySelector& selector,
+    const Points& candidates,
+    const Values& displacements
+)
+{
+    return selector.run
+    (
+        [](const RadialKernel& kernel, const LinearPolynomial& frame,
+           const Points& x, const Values& d)
+        {
+            return std::unique_ptr<GreedyModel>(new NaiveGreedyModel(kernel, frame, x, d));
+        },
+        candidates,
+        displacements
+    );
+}
+
 } // namespace dcprbf

@@ -1,4 +1,5 @@
-// dcpRBF numerical core: RBF interpolant of a vector field (paper eqs. 2-6)
+// dcpRBF test reference (not in libdcpRBF): RBF interpolant of a vector
+// field (paper eqs. 2-6), solved densely from scratch (SaddleSolver)
 //
 //     s(x) = sum_j alpha_j phi(|x - c_j|) + p(x),
 //     p(x) = beta_0 + sum_k beta_k (x_k - shift_k)/scale   (k < dim)

@@ -1,4 +1,5 @@
-// dcpRBF numerical core: solver of the RBF saddle-point system (paper eq. 5)
+// dcpRBF test reference (not in libdcpRBF): dense solver of the RBF
+// saddle-point system (paper eq. 5)
 //
 //     [ Phi  P ] [alpha]   [d]
 //     [ P^T  0 ] [beta ] = [0]
