@@ -16,7 +16,7 @@ First cell height: y+ = 1 at Re = 1e6 (chord 1) is about y = c / (Re sqrt(Cf/2))
 = 2.3e-5 c with the flat-plate skin friction Cf = 0.0592 Re^-0.2 = 0.0037; the
 default 1.5e-5 c leaves margin for the suction peak (local velocity up to 1.5 U).
 With 30 layers at growth 1.2 the layer is 1.8e-2 c thick and its outer cells
-(3e-3 c) are a third of the neighbouring triangles (--size-wing 0.01).
+(3e-3 c) meet triangles 2.5 times higher (7.5e-3 c at mid chord, --size-wing 0.01).
 Defaults: 17738 cells (8154 hexahedra, 9584 prisms), Mesh OK in checkMesh.
 
 Usage: airfoilBLMesh.py [output.msh] [--first-layer 1.5e-5] [--layers 30] ...
