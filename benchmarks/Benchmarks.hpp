@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // The sections of coreBenchmark. Each prints a markdown table to stdout;
 // every ratio in it compares two timings taken in the same run.
 #pragma once

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Evaluation of an interpolant with 1000 control points at the volume
 // points: RbfEvaluator (tree / blocked dense, 1 and 2 threads) against the
 // naive double loop (one thread).

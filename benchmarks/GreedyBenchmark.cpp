@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Greedy selection of N control points among the surface points:
 // incremental (GreedySelector::select) against the naive re-solve per added
 // point (selectNaive, tests/core/reference), both measured to the end.

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // One add + one remove of a control point (IncrementalSaddleSolver) against
 // a refactorization of the same set from scratch.
 #include "Benchmarks.hpp"

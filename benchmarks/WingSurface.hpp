@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Benchmark geometry: the surface of a tapered, swept wing with NACA 0012
 // sections, its deformation, and volume points around it.
 //

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // coreBenchmark: timings of the numerical core on a wing-like surface.
 //
 //     coreBenchmark [--quick] [eval] [update] [greedy]

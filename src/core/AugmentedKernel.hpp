@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: the kernel of the incremental (updatable) solvers
 //
 //     K_c(x, y) = phi(|x - y|) + c q(x).q(y)

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: a control set drawn from a fixed set of candidate
 // points (the boundary points), changed one point at a time: the dynamic
 // control points of Niu, Lei & He (2017).

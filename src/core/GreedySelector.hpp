@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: greedy selection of control points among candidate
 // boundary points (Rendall & Allen 2009), optionally double-edged
 // (Wang et al. 2015).

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: residual of the greedy selection at every candidate,
 // updated in O(N Nb) per added control point (Newton basis).
 //

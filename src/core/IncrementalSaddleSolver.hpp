@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: the RBF system of a control set that changes by
 // single points (dynamic control points), updated in O(N^2) per change.
 //
@@ -77,6 +78,9 @@ public:
 
     //- Number of O(N^3) factorizations so far
     int factorizations() const { return f_.factorizations(); }
+
+    //- The factorization (leave-one-out errors: inverseDiagonal())
+    const SaddleFactorization& factorization() const { return f_; }
 
 private:
     //- Index of a centre within round-off distance of x, or -1

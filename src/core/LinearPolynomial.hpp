@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: the linear polynomial part of an RBF interpolant
 // and the coordinate frame it is written in.
 //

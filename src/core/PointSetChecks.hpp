@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: validation of control/candidate point sets, shared
 // by IncrementalSaddleSolver, GreedySelector and the tests' reference
 // RbfInterpolant so that the same input gives the same Error message

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: kd-tree over a fixed set of 3D points (nanoflann).
 //
 // The dataset adaptor follows nanoflann's adaptor style (kdtree_get_point_count,

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: fast evaluation of a solved RBF interpolant
 //
 //     s(x) = sum_j alpha_j phi(|x - c_j|) + sum_i beta_i q_i(x)

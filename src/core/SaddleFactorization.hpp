@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: the factorized saddle system of an ordered set of
 // centres, updated in O(N^2) when a centre is appended or deleted.
 //

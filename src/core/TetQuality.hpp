@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: quality of a deformed tetrahedron relative to its
 // reference shape (Knupp-style size-shape metric with the reference element
 // as target).

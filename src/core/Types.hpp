@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: basic types shared by every core class.
 // OpenFOAM-free: only the standard library and Eigen.
 #pragma once

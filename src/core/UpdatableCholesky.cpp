@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 #include "UpdatableCholesky.hpp"
 
 #include <algorithm>

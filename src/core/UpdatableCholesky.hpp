@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: Cholesky factor A = L L^T of a symmetric positive
 // definite matrix whose rows/columns are appended and deleted one at a time.
 //

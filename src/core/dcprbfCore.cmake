@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # The OpenFOAM-free core as a CMake static library "dcprbfCore", for the unit
 # tests (tests/core) and the benchmarks (benchmarks). include() it after
 # project(); OpenFOAM builds the same sources with wmake (src/Make/files).

@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 """./run --pimple: do the control-point swaps jolt the flow?
 
 The pitching tutorial (tutorials/pitchingAirfoil2D: NACA0012, laminar

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Unit tests of DynamicControlSet's fresh starts: taking over a greedy's
 // factorization equals factorizing the same set, and refactorize() after
 // updates gives bit for bit the state a restart (reset on the indices) gives.

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Unit tests of the error-guided swap pieces of DynamicControlSet: Rippa's
 // leave-one-out errors equal brute-force removal, a constant-size swap equals
 // a fresh set, the join and leave choices, undo, and the blended interpolant.

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Unit tests of DynamicControlSet: the nearest-point rules, the guards, and
 // that after swaps the interpolant equals a fresh solve on the same set.
 #include "DynamicControlSet.hpp"

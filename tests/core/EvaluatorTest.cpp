@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Unit tests of RbfEvaluator (tree, blocked dense and brute force agree) and
 // of LinearPolynomial (frames, unisolvence).
 #include "RbfEvaluator.hpp"

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Unit test of GreedySelector on candidates far from the origin (terrain in
 // UTM coordinates: 6.6e5, 4.75e6): the seed is checked in the candidates'
 // frame, so a translated set gives the same selection as the original one.

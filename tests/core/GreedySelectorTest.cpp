@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Unit tests of GreedySelector: the incremental selection picks the same
 // points as the naive re-solving reference with the same coefficients; the
 // stopping rules; the models' invariants.

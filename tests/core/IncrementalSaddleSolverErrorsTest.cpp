@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Guards of IncrementalSaddleSolver: every refused change throws Error and
 // leaves the control set (and its coefficients) unchanged.
 #include "IncrementalSaddleSolver.hpp"

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Unit tests of IncrementalSaddleSolver and UpdatableCholesky: after any
 // sequence of add/remove/replace the coefficients equal a fresh solve of the
 // same set; every guard.

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Unit tests of the kernels' formulas and of the kd-tree.
 #include "PointTree.hpp"
 #include "RadialKernel.hpp"

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // The kernel x polynomial x dimension parameters shared by the core's
 // parameterised tests: every kernel, with and without the polynomial (TPS
 // only with it), in 2D and 3D.

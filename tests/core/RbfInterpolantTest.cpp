@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Unit tests of RbfInterpolant and SaddleSolver: exactness, polynomial
 // reproduction, and every error path.
 #include "RbfInterpolant.hpp"

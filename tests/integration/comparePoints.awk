@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # awk -f comparePoints.awk A/points B/points
 # Largest difference between two ascii OpenFOAM point lists, relative to the
 # bounding-box diagonal of A. Prints "maxDiff relDiff nPoints"; exits 1 if

@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # awk -v moving="wing" -v static="inlet outlet topAndBottom" -v cut=0.5 \
 #     -f manualDecomposition.awk constant/polyMesh/{boundary,points,faces,owner,neighbour} \
 #     > constant/cellDecomposition

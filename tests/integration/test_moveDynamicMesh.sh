@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # Integration tests: moveDynamicMesh with dcpRBF on a 2D and a 3D case.
 # Each test runs in its own empty folder (see lib.sh: runTest).
 

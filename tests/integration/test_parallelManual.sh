@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # Integration tests: parallel runs on `manual` decompositions built to give a
 # processor points of a moving (static) patch without any face of that patch
 # there: cells that touch the patch only at a vertex or an edge go to the

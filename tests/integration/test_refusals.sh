@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # Integration tests: meshes dcpRBF cannot move correctly are refused at the
 # start, with a message naming the patch (not a crash later, not a silent run).
 

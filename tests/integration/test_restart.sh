@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # Integration tests: a run restarted from a written time reproduces the
 # uninterrupted run.
 

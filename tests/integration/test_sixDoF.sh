@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # Integration tests: dcpRBF driven by a 6-DoF rigid body (the README recipe).
 # OpenFOAM's incompressible/pimpleFoam/RAS/wingMotion/wingMotion2D_pimpleFoam
 # (fields, schemes, solvers, kOmegaSST, the body's mass, inertia, constraints

@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # Integration tests: OpenFOAM's mesh/moveDynamicMesh/SnakeRiverCanyon tutorial
 # (the ground patch minZ uses surfaceDisplacement: it is projected onto a
 # terrain STL, at most velocity*deltaT = 10 m per step; maxZ is fixed; the

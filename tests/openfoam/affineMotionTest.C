@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dcpRBF tests: affine boundary motion is reproduced everywhere
 -------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
+-------------------------------------------------------------------------------
 Description
     Every boundary patch moves by the same affine map x -> M x + b (rotation,
     stretch, translation). With all boundary points as control points and the

@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dcpRBF tests
 -------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
+-------------------------------------------------------------------------------
 Description
     GoogleTest main for the OpenFOAM tier: owns the argList (serial, no
     banner) and turns FatalError/FatalIOError into C++ exceptions, so a test

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 """Wall-resolved 2D mesh of a NACA0012 airfoil (chord 1, leading edge at the
 origin) with a structured boundary layer, in a rectangular channel, one cell
 thick (hexahedra in the layer, prisms outside), written for gmshToFoam.

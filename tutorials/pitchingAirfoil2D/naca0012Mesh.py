@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 """Coarse 2D mesh of a NACA0012 airfoil (chord 1, leading edge at the origin)
 in a rectangular channel, one cell thick (prisms), written for gmshToFoam.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 """Pictures of the pitchingAirfoil2D results (matplotlib, no ParaView needed).
 
 images/mesh.png:   the mesh near the airfoil at t = 0 and at the largest

@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF test reference (not in libdcpRBF): the reference model of the greedy
 // selection, and selectNaive(), GreedySelector's loop run on it. Every
 // change of the selected set C assembles and solves the whole saddle system

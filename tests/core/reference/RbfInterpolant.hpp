@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF test reference (not in libdcpRBF): RBF interpolant of a vector
 // field (paper eqs. 2-6), solved densely from scratch (SaddleSolver)
 //

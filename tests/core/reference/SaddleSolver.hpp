@@ -1,3 +1,4 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF test reference (not in libdcpRBF): dense solver of the RBF
 // saddle-point system (paper eq. 5)
 //

@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # Test-only reference implementations as a CMake static library
 # "dcprbfReference" (not part of libdcpRBF.so): RbfInterpolant and
 # SaddleSolver (dense from-scratch solves) and NaiveGreedyModel/selectNaive

@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # awk -f comparePatchPoints.awk LABELS REF/points A/points B/points
 # Compares the points whose labels are listed in LABELS (one a line, e.g. from
 # patchPoints.awk) between two ascii OpenFOAM point lists A and B; REF (the

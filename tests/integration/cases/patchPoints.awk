@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # awk -v patch=NAME -f patchPoints.awk constant/polyMesh/boundary constant/polyMesh/faces
 # The point labels of patch NAME (its meshPoints, sorted), one a line, from an
 # ascii polyMesh. Exits 1 if the patch is not found or has no faces.
