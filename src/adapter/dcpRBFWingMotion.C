@@ -269,6 +269,20 @@ wingBendingTwistDisplacementPointPatchVectorField
 Foam::wingBendingTwistDisplacementPointPatchVectorField::
 wingBendingTwistDisplacementPointPatchVectorField
 (
+    const wingBendingTwistDisplacementPointPatchVectorField& ptf
+)
+:
+    fixedValuePointPatchField<vector>(ptf),
+    motion_(ptf.motion_),
+    tipDeflection_(ptf.tipDeflection_.clone()),
+    tipTwist_(ptf.tipTwist_.clone()),
+    p0_(ptf.p0_)
+{}
+
+
+Foam::wingBendingTwistDisplacementPointPatchVectorField::
+wingBendingTwistDisplacementPointPatchVectorField
+(
     const wingBendingTwistDisplacementPointPatchVectorField& ptf,
     const DimensionedField<vector, pointMesh>& iF
 )
