@@ -116,32 +116,33 @@ def main():
     ap.add_argument("--coarse", action="store_true",
                     help="the integration test's mesh (~20k cells)")
     ap.add_argument("--fine", action="store_true",
-                    help="a mesh of more than 1M points")
+                    help="a mesh of more than 1M points (not run in the tests)")
     ap.add_argument("--size-wing", type=float, help="surface size on the wing [m]")
     ap.add_argument("--size-edge", type=float, help="size at the leading and trailing edges [m]")
     ap.add_argument("--size-far", type=float, help="size at the far field [m]")
     ap.add_argument("--layers", type=int, help="prism layers")
-    ap.add_argument("--first-height", type=float, default=2e-4,
-                    help="first layer height [m]")
-    ap.add_argument("--growth", type=float, default=1.3, help="layer growth ratio")
+    ap.add_argument("--first-height", type=float, help="first layer height [m]")
+    ap.add_argument("--growth", type=float, help="layer growth ratio")
     ap.add_argument("--thickness", type=float, default=0.10,
                     help="section thickness / chord")
     a = ap.parse_args()
 
     level = "fine" if a.fine else "coarse" if a.coarse else "default"
-    defaults = {            # size-wing size-edge size-far layers
-        "coarse":  (0.06, 0.02, 1.2, 3),
-        "default": (0.03, 0.008, 0.6, 6),
-        "fine":    (0.008, 0.002, 0.3, 12),
+    defaults = {  # size-wing size-edge size-far layers first-height growth
+        "coarse":  (0.06, 0.02, 1.2, 3, 2e-4, 1.3),
+        "default": (0.03, 0.008, 0.6, 6, 2e-4, 1.3),
+        "fine":    (0.008, 0.002, 0.3, 14, 5e-5, 1.25),    # > 1M points
     }[level]
     hw = a.size_wing or defaults[0]
     he = a.size_edge or defaults[1]
     hf = a.size_far or defaults[2]
     nl = a.layers or defaults[3]
+    h1 = a.first_height or defaults[4]
+    growth = a.growth or defaults[5]
     heights = []
     h = 0.0
     for i in range(nl):
-        h += a.first_height*a.growth**i
+        h += h1*growth**i
         heights.append(h)
 
     gmsh.initialize()
@@ -238,7 +239,6 @@ def main():
                             ("farfield", 2, far), ("fluid", 3, layers + [fluid])):
         gmsh.model.setPhysicalName(dim, gmsh.model.addPhysicalGroup(dim, tags), name)
     gmsh.option.setNumber("Mesh.MshFileVersion", 2.2)
-    gmsh.option.setNumber("Mesh.Binary", 1 if a.fine else 0)
     gmsh.write(a.output)
 
     nodeTags = gmsh.model.mesh.getNodes()[0]
