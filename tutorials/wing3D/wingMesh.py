@@ -1,0 +1,252 @@
+#!/usr/bin/python3
+"""ONERA M6 planform half wing (NACA 0010 sections) in a far-field box with a
+symmetry plane at the root: prism layers on the wing, tetrahedra elsewhere,
+written for gmshToFoam (msh 2.2).
+
+Planform (ONERA M6): root chord 0.806 m, semi-span 1.1963 m, leading-edge
+sweep 30 deg, taper 0.562 (tip chord 0.453 m), no twist, no dihedral, flat
+tip. The section is NACA 0010 with its standard blunt trailing edge
+(0.21 % of the chord), a documented stand-in for the ONERA D section (9.8 %
+thick, sharp trailing edge) whose coordinates are not reproduced here. Axes: x streamwise, y along
+the span (root at y = 0), z up; the leading edge of the root at the origin.
+
+Patches: wing (the wing and its tip), symmetry (y = 0), farfield (the other
+five faces of the box).
+
+Usage: wingMesh.py [output.msh] [--coarse | --fine] [--size-wing H] ...
+"""
+import argparse
+import math
+import sys
+
+import gmsh
+
+SEMI_SPAN = 1.1963
+ROOT_CHORD = 0.806
+TIP_CHORD = 0.453
+SWEEP_LE = 30.0          # deg
+
+
+def naca00(x, t):
+    """Half thickness of a NACA 00tt section, standard (blunt) trailing edge:
+    0.21 % of the chord thick at x = 1 for t = 0.10."""
+    return 5*t*(0.2969*math.sqrt(x) - 0.1260*x - 0.3516*x**2
+                + 0.2843*x**3 - 0.1015*x**4)
+
+
+def section(geo, y, thickness, n):
+    """The section at y: upper spline (TE -> LE), lower spline (LE -> TE),
+    trailing-edge base line (lower -> upper), its leading-edge point and its
+    upper and lower trailing-edge points."""
+    xle = y*math.tan(math.radians(SWEEP_LE))
+    c = ROOT_CHORD + (TIP_CHORD - ROOT_CHORD)*y/SEMI_SPAN
+    xs = [0.5*(1 - math.cos(math.pi*i/n)) for i in range(n + 1)]
+    le = geo.addPoint(xle, y, 0)
+    teU = geo.addPoint(xle + c, y, c*naca00(1.0, thickness))
+    teL = geo.addPoint(xle + c, y, -c*naca00(1.0, thickness))
+    upper = [teU] + [geo.addPoint(xle + c*x, y, c*naca00(x, thickness))
+                     for x in reversed(xs[1:-1])] + [le]
+    lower = [le] + [geo.addPoint(xle + c*x, y, -c*naca00(x, thickness))
+                    for x in xs[1:-1]] + [teL]
+    return (geo.addSpline(upper), geo.addSpline(lower), geo.addLine(teL, teU),
+            le, teU, teL)
+
+
+def outwardNormals(surfaces):
+    """Unit outward normals at the wing's mesh nodes (angle-weighted mean of
+    the triangles' normals), as a list of vector triangles (gmsh "VT" list
+    data). Nodes of the root section get normals in the plane y = 0, so that
+    the prisms' side faces stay in the symmetry plane."""
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    xyz = {int(t): coords[3*i:3*i + 3] for i, t in enumerate(tags)}
+    normal = {}
+    tris = []
+    for s in surfaces:
+        _, _, nodes = gmsh.model.mesh.getElements(2, s)
+        ts = [[int(t) for t in nodes[0][3*i:3*i + 3]] for i in range(len(nodes[0])//3)]
+        ns = []
+        vote = 0.0
+        for a, b, c in ts:
+            pa, pb, pc = xyz[a], xyz[b], xyz[c]
+            u = [pb[k] - pa[k] for k in range(3)]
+            v = [pc[k] - pa[k] for k in range(3)]
+            n = [u[1]*v[2] - u[2]*v[1], u[2]*v[0] - u[0]*v[2], u[0]*v[1] - u[1]*v[0]]
+            # outward: away from the chord point of the triangle's station
+            # (tip cap: +y)
+            g = [(pa[k] + pb[k] + pc[k])/3 for k in range(3)]
+            xle = g[1]*math.tan(math.radians(SWEEP_LE))
+            ch = ROOT_CHORD + (TIP_CHORD - ROOT_CHORD)*g[1]/SEMI_SPAN
+            xc = min(max(g[0], xle + 0.1*ch), xle + 0.9*ch)
+            out = [g[0] - xc, 0.0, g[2]]
+            if g[1] > SEMI_SPAN - 1e-9:
+                out = [0.0, 1.0, 0.0]
+            vote += sum(n[k]*out[k] for k in range(3))
+            ns.append(((a, b, c), n))
+        sign = 1.0 if vote > 0 else -1.0
+        for tri, n in ns:
+            tris.append(tri)
+            mn = math.sqrt(sum(c*c for c in n))
+            for i, t in enumerate(tri):
+                # angle-weighted: the bisector at the sharp trailing edge
+                p0, p1, p2 = (xyz[tri[(i + j) % 3]] for j in range(3))
+                u = [p1[k] - p0[k] for k in range(3)]
+                v = [p2[k] - p0[k] for k in range(3)]
+                cosA = sum(u[k]*v[k] for k in range(3))/math.sqrt(
+                    sum(c*c for c in u)*sum(c*c for c in v))
+                w = math.acos(max(-1.0, min(1.0, cosA)))/mn
+                m = normal.setdefault(t, [0.0, 0.0, 0.0])
+                for k in range(3):
+                    m[k] += sign*w*n[k]
+    for t, n in normal.items():
+        if abs(xyz[t][1]) < 1e-9:
+            n[1] = 0.0
+        m = math.sqrt(sum(c*c for c in n))
+        normal[t] = [c/m for c in n]
+    data = []
+    for tri in tris:
+        data += [xyz[t][0] for t in tri] + [xyz[t][1] for t in tri] + [xyz[t][2] for t in tri]
+        for t in tri:
+            data += normal[t]
+    return len(tris), data
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("output", nargs="?", default="wing.msh")
+    ap.add_argument("--coarse", action="store_true",
+                    help="the integration test's mesh (~20k cells)")
+    ap.add_argument("--fine", action="store_true",
+                    help="a mesh of more than 1M points (not run in the tests)")
+    ap.add_argument("--size-wing", type=float, help="surface size on the wing [m]")
+    ap.add_argument("--size-edge", type=float, help="size at the leading and trailing edges [m]")
+    ap.add_argument("--size-far", type=float, help="size at the far field [m]")
+    ap.add_argument("--layers", type=int, help="prism layers")
+    ap.add_argument("--first-height", type=float, help="first layer height [m]")
+    ap.add_argument("--growth", type=float, help="layer growth ratio")
+    ap.add_argument("--thickness", type=float, default=0.10,
+                    help="section thickness / chord")
+    a = ap.parse_args()
+
+    level = "fine" if a.fine else "coarse" if a.coarse else "default"
+    defaults = {  # size-wing size-edge size-far layers first-height growth
+        "coarse":  (0.06, 0.02, 1.2, 3, 2e-4, 1.3),
+        "default": (0.03, 0.008, 0.6, 6, 2e-4, 1.3),
+        "fine":    (0.008, 0.002, 0.3, 14, 5e-5, 1.25),    # > 1M points
+    }[level]
+    hw = a.size_wing or defaults[0]
+    he = a.size_edge or defaults[1]
+    hf = a.size_far or defaults[2]
+    nl = a.layers or defaults[3]
+    h1 = a.first_height or defaults[4]
+    growth = a.growth or defaults[5]
+    heights = []
+    h = 0.0
+    for i in range(nl):
+        h += h1*growth**i
+        heights.append(h)
+
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 1)
+    gmsh.model.add("onera_m6_naca0010")
+
+    # Wing (built-in kernel, which the boundary-layer extrusion needs):
+    # ruled surfaces between the root and tip sections (upper, lower, the
+    # blunt trailing edge's base), flat tip cap. A sharp trailing edge gives
+    # prism side faces of skewness > 4 there (checkMesh fails).
+    geo = gmsh.model.geo
+    ru, rl, rb, rle, rteU, rteL = section(geo, 0.0, a.thickness, 60)
+    tu, tl, tb, tle, tteU, tteL = section(geo, SEMI_SPAN, a.thickness, 60)
+    le = geo.addLine(rle, tle)
+    teU = geo.addLine(rteU, tteU)
+    teL = geo.addLine(rteL, tteL)
+    wing = [geo.addSurfaceFilling([geo.addCurveLoop([ru, le, -tu, -teU])]),
+            geo.addSurfaceFilling([geo.addCurveLoop([rl, teL, -tl, -le])]),
+            geo.addSurfaceFilling([geo.addCurveLoop([rb, teU, -tb, -teL])]),
+            geo.addPlaneSurface([geo.addCurveLoop([tu, tl, tb])])]
+    geo.synchronize()
+    eps = 1e-6
+    lete = [le, teU, teL]
+    tipCurves = [tu, tl, tb]
+
+    # Sizes: fine along the leading and trailing edges and the tip
+    field = gmsh.model.mesh.field
+    dEdge = field.add("Distance")
+    field.setNumbers(dEdge, "EdgesList", lete + tipCurves)
+    field.setNumber(dEdge, "NumPointsPerCurve", 400)
+    tEdge = field.add("Threshold")
+    field.setNumber(tEdge, "InField", dEdge)
+    field.setNumber(tEdge, "SizeMin", he)
+    field.setNumber(tEdge, "SizeMax", hw)
+    field.setNumber(tEdge, "DistMin", 0.005)
+    field.setNumber(tEdge, "DistMax", 0.08)
+    field.setNumber(tEdge, "StopAtDistMax", 1)
+    dWing = field.add("Distance")
+    field.setNumbers(dWing, "FacesList", wing)
+    field.setNumber(dWing, "NumPointsPerCurve", 100)
+    tWing = field.add("Threshold")
+    field.setNumber(tWing, "InField", dWing)
+    field.setNumber(tWing, "SizeMin", hw)
+    field.setNumber(tWing, "SizeMax", hf)
+    field.setNumber(tWing, "DistMin", 0.02)
+    field.setNumber(tWing, "DistMax", 3.0)
+    fMin = field.add("Min")
+    field.setNumbers(fMin, "FieldsList", [tEdge, tWing])
+    field.setAsBackgroundMesh(fMin)
+    gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
+    gmsh.option.setNumber("Mesh.Algorithm", 6)
+    gmsh.option.setNumber("Mesh.Algorithm3D", 1)
+
+    # Surface mesh of the wing, then the prism layers along our own normals
+    # (a vector view: the root nodes march in the symmetry plane; list data,
+    # which outlives the re-meshing of the wing by generate(3), which gives
+    # the same surface mesh)
+    gmsh.model.mesh.generate(2)
+    view = gmsh.view.add("normals")
+    gmsh.view.addListData(view, "VT", *outwardNormals(wing))
+    ext = gmsh.model.geo.extrudeBoundaryLayer(
+        [(2, t) for t in wing], [1]*nl, heights, True,
+        viewIndex=gmsh.view.getIndex(view))
+    top = [ext[i - 1] for i in range(1, len(ext)) if ext[i][0] == 3]
+    layers = [t for d, t in ext if d == 3]
+    gmsh.model.geo.synchronize()
+
+    # Box: x in [-5, 7] m, y in [0, 4] m, z in [-4, 4] m
+    x0, x1, y1, z = -5.0, 7.0, 4.0, 4.0
+    hole = geo.addCurveLoop([c[1] for c in gmsh.model.getBoundary(top)])
+    p = [geo.addPoint(x, y, zz, hf) for y in (0.0, y1)
+         for (x, zz) in ((x0, -z), (x1, -z), (x1, z), (x0, z))]
+    l0 = [geo.addLine(p[i], p[(i + 1) % 4]) for i in range(4)]
+    l1 = [geo.addLine(p[4 + i], p[4 + (i + 1) % 4]) for i in range(4)]
+    lv = [geo.addLine(p[i], p[4 + i]) for i in range(4)]
+    sym = geo.addPlaneSurface([geo.addCurveLoop(l0), hole])
+    far = [geo.addPlaneSurface([geo.addCurveLoop(l1)])]
+    for i in range(4):
+        j = (i + 1) % 4
+        far.append(geo.addPlaneSurface([geo.addCurveLoop([l0[i], lv[j], -l1[i], -lv[i]])]))
+    shell = geo.addSurfaceLoop([t for d, t in top] + [sym] + far)
+    fluid = geo.addVolume([shell])
+    geo.synchronize()
+
+    gmsh.model.mesh.generate(3)
+
+    # The prisms' side faces on the root plane belong to the symmetry patch
+    # (the extruded entities' extents are known once meshed)
+    rootSides = [t for d, t in ext if d == 2 and (d, t) not in top
+                 and gmsh.model.getBoundingBox(2, t)[4] < eps]
+    for name, dim, tags in (("wing", 2, wing), ("symmetry", 2, [sym] + rootSides),
+                            ("farfield", 2, far), ("fluid", 3, layers + [fluid])):
+        gmsh.model.setPhysicalName(dim, gmsh.model.addPhysicalGroup(dim, tags), name)
+    gmsh.option.setNumber("Mesh.MshFileVersion", 2.2)
+    gmsh.write(a.output)
+
+    nodeTags = gmsh.model.mesh.getNodes()[0]
+    print("wingMesh: %s mesh, %d points, wing %g/%g m, far %g m, %d layers, "
+          "first height %g m, total %g m"
+          % (level, len(nodeTags), hw, he, hf, nl, heights[0], heights[-1]))
+    gmsh.finalize()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
