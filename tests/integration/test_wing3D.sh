@@ -1,3 +1,4 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # Integration test: the wing3D tutorial shortened (coarse mesh, 5 steps to
 # the full bending and twist at t = 0.25): moveDynamicMesh with
 # wingBendingTwistDisplacement and dcpRBF, checkMesh passes at the written

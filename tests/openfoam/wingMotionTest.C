@@ -2,6 +2,10 @@
   dcpRBF tests: the wingBendingTwistDisplacement point patch condition
   (dcpRBFWingMotion): root fixed, twist axis only deflected, eta^2 bending,
   linear twist, Function1 time laws, clone, FatalIOError on bad entries
+-------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
 \*---------------------------------------------------------------------------*/
 
 #include "testHelpers.H"

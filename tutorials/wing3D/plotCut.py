@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 """Cut of the mesh by the plane y = Y (default: mid semi-span) at rest and at
 written times, near the wing section: images/cut.png. Reads the ASCII
 polyMesh (constant/polyMesh/faces, points of each time).

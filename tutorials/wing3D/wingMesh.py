@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 """ONERA M6 planform half wing (NACA 0010 sections) in a far-field box with a
 symmetry plane at the root: prism layers on the wing, tetrahedra elsewhere,
 written for gmshToFoam (msh 2.2).
