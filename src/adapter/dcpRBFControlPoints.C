@@ -77,6 +77,8 @@ void Foam::dcpRBFControlPoints::storeState()
     labelList indices(set_.indices().begin(), set_.indices().end());
     labelList ages(set_.ages().begin(), set_.ages().end());
     state_.set("ready", ready_);
+    state_.set("trialWait", trialWait_);
+    state_.set("trialBackoff", trialBackoff_);
     state_.set("indices", indices);
     state_.set("ages", ages);
     if (blendFrom_)
@@ -114,6 +116,8 @@ bool Foam::dcpRBFControlPoints::readState()
     }
     set_.reset(std::vector<Eigen::Index>(indices.begin(), indices.end()));
     set_.setAges(std::vector<int>(ages.begin(), ages.end()));
+    trialWait_ = state_.getOrDefault<label>("trialWait", 0);
+    trialBackoff_ = state_.getOrDefault<label>("trialBackoff", 1);
     if (state_.found("blendStep"))
     {
         blendStep_ = state_.get<label>("blendStep");
@@ -163,7 +167,10 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
     ready_(false),
     updated_(false),
     warnedMaxPoints_(false),
+    nKept_(0),
     blendStep_(0),
+    trialWait_(0),
+    trialBackoff_(1),
     state_
     (
         IOobject
@@ -360,19 +367,24 @@ void Foam::dcpRBFControlPoints::swap
     const label n = min(s.nSwap, min(q.worst.size(), q.best.size()));
     for (label k = 0; k < n; ++k)
     {
-        // at maxPoints the leave comes first, so the swap keeps the size
-        if (set_.size() >= s.maxPoints)
-        {
-            if (leaveNear(q.best[k]))
-            {
-                ++nRemoved;
-                nAdded += addNear(q.worst[k]);
-            }
-        }
-        else
+        if (set_.size() < s.maxPoints)
         {
             nAdded += addNear(q.worst[k]);
             nRemoved += leaveNear(q.best[k]);
+        }
+        else if
+        (
+            // at maxPoints: both in one update, at constant size
+            set_.swapNearest
+            (
+                Eigen::RowVector3d(q.worst[k][1], q.worst[k][2], q.worst[k][3]),
+                Eigen::RowVector3d(q.best[k][1], q.best[k][2], q.best[k][3])
+            )
+        )
+        {
+            ++nAdded;
+            ++nRemoved;
+            updated_ = true;
         }
     }
 }
@@ -397,76 +409,63 @@ bool Foam::dcpRBFControlPoints::canTrial() const
 {
     const dcpRBFSelectionSettings& s = settings_.selection();
     return
-        ready_ && !blendFrom_ && s.nSwap > 0
+        ready_ && !blendFrom_ && trialWait_ == 0 && s.nSwap > 0
      && s.selection == dcpRBFSelectionSettings::mode::dynamic
      && s.swapRule == dcpRBFSelectionSettings::rule::errorGuided;
 }
 
 
-Foam::label Foam::dcpRBFControlPoints::proposeSwaps
+bool Foam::dcpRBFControlPoints::proposeSwap
 (
     const dcpRBFQualityRegion::summary& q,
     const dcprbf::Values& d
 )
 {
-    // Joining: near each of the worst cells, among the joinNeighbours
-    // nearest candidates, the one the interpolant reproduces worst
+    if (q.worst.empty())
+    {
+        return false;
+    }
+    // Joining: near the worst cell, among the joinNeighbours nearest
+    // candidates, the one of largest error / distance
     static const int joinNeighbours = 8;
     const dcprbf::Values error(d - set_.evaluator().evaluate(boundary_.points()));
     const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
-
-    // Leaving: the moving control points by what their removal costs
-    const dcprbf::Values loo(set_.leaveOneOutErrors(d));
-    const std::vector<Eigen::Index> leave(set_.removalOrder(loo));
-    std::vector<scalar> looOf(boundary_.size(), 0);
-    for (std::size_t k = 0; k < set_.indices().size(); ++k)
+    const Eigen::RowVector3d x(q.worst[0][1], q.worst[0][2], q.worst[0][3]);
+    const Eigen::Index in = set_.mostInaccurateNear(x, error, joinNeighbours, 1e-9*dMax);
+    if (in < 0)
     {
-        looOf[set_.indices()[k]] = loo.row(k).norm();
+        return false;
     }
 
-    trialFrom_.reset(new dcprbf::DynamicControlSet::State(set_.state()));
-    label n = 0;
-    std::size_t next = 0;
-    for (label k = 0; k < min(settings_.selection().nSwap, q.worst.size()); ++k)
+    // Leaving: the moving control point whose removal costs least
+    const dcprbf::DynamicControlSet::State before(set_.state());
+    for (const Eigen::Index out : set_.removalOrder(set_.leaveOneOutErrors(d)))
     {
-        const Eigen::RowVector3d x(q.worst[k][1], q.worst[k][2], q.worst[k][3]);
-        const Eigen::Index in =
-            set_.mostInaccurateNear(x, error, joinNeighbours, 1e-9*dMax);
-        // a swap that costs more where the point leaves than it gains where
-        // the other joins is not proposed
-        while (in >= 0 && next < leave.size() && looOf[leave[next]] < error.row(in).norm())
+        if (set_.swap(in, out))
         {
-            if (set_.swap(in, leave[next++]))
+            if (!stepFrom_)
             {
-                ++n;
-                break;
+                stepFrom_.reset(new dcprbf::DynamicControlSet::State(before));
+                nKept_ = 0;
             }
+            trialFrom_.reset(new dcprbf::DynamicControlSet::State(before));
+            solve(d);
+            return true;
         }
     }
-    if (n == 0)
-    {
-        trialFrom_.reset();
-        return 0;
-    }
-    solve(d);
-    return n;
+    return false;
 }
 
 
-void Foam::dcpRBFControlPoints::keepSwaps(const dcprbf::Values& d)
+void Foam::dcpRBFControlPoints::keepSwap()
 {
-    updated_ = true;
-    if (settings_.selection().swapBlendSteps > 1)
-    {
-        blendFrom_ = std::move(trialFrom_);
-        blendStep_ = 1;
-        solve(d);
-    }
     trialFrom_.reset();
+    ++nKept_;
+    updated_ = true;
 }
 
 
-void Foam::dcpRBFControlPoints::undoSwaps(const dcprbf::Values& d)
+void Foam::dcpRBFControlPoints::undoSwap(const dcprbf::Values& d)
 {
     set_.restore(*trialFrom_);
     trialFrom_.reset();
@@ -474,9 +473,42 @@ void Foam::dcpRBFControlPoints::undoSwaps(const dcprbf::Values& d)
 }
 
 
+Foam::label Foam::dcpRBFControlPoints::endTrials(const dcprbf::Values& d)
+{
+    if (!stepFrom_)
+    {
+        return 0;
+    }
+    const label kept = nKept_;
+    if (kept == 0)
+    {
+        // the set fits the motion: try again later, less often while it does
+        trialWait_ = trialBackoff_;
+        trialBackoff_ = min(2*trialBackoff_, maxTrialWait);
+    }
+    else
+    {
+        trialBackoff_ = 1;
+        if (settings_.selection().swapBlendSteps > 1)
+        {
+            blendFrom_ = std::move(stepFrom_);
+            blendStep_ = 1;
+            solve(d);
+        }
+    }
+    stepFrom_.reset();
+    nKept_ = 0;
+    return kept;
+}
+
+
 void Foam::dcpRBFControlPoints::endStep()
 {
     set_.nextStep();
+    if (trialWait_ > 0)
+    {
+        --trialWait_;
+    }
     if (blendFrom_ && ++blendStep_ >= settings_.selection().swapBlendSteps)
     {
         blendFrom_.reset();

@@ -221,7 +221,6 @@ void Foam::dcpRBFMotionSolver::guardQuality
     const scalar floor = settings_.qualityFloor();
     for (label iter = 0; ; ++iter)
     {
-        measureQuality(r);
         const dcpRBFQualityRegion::summary& q = lastQuality_;
 
         if (q.minQuality >= floor || q.worst.empty())
@@ -250,6 +249,7 @@ void Foam::dcpRBFMotionSolver::guardQuality
         ++r.nGuard;
         controlPoints_.solve(d);
         r.boundaryError = interpolateDisplacement(d);
+        measureQuality(r);
     }
 
     if (lastQuality_.nInverted)
@@ -282,41 +282,44 @@ void Foam::dcpRBFMotionSolver::trySwaps
     dcpRBFStepLog::record& r
 )
 {
-    const dcpRBFQualityRegion::summary q0(lastQuality_);
-    if (!controlPoints_.canTrial() || q0.worst.empty() || q0.minQuality >= 1 - 1e-12)
+    if (!controlPoints_.canTrial())
     {
         return;
     }
-    const label n = controlPoints_.proposeSwaps(q0, d);
-    if (!n)
+    // up to nSwap trials, each kept only if the minimum quality improves
+    for (label trial = 0; trial < settings_.selection().nSwap; ++trial)
     {
-        return;
-    }
-    const vectorField field0(pointDisplacement_.primitiveField());
-    const pointField points0Copy(lastPoints_);
-    const dcpRBFStepLog::record r0(r);
-    r.boundaryError = interpolateDisplacement(d);
-    measureQuality(r);
-    if (lastQuality_.minQuality > q0.minQuality)
-    {
-        r.nAdded += n;
-        r.nRemoved += n;
-        controlPoints_.keepSwaps(d);
-        if (settings_.selection().swapBlendSteps > 1)
+        const dcpRBFQualityRegion::summary q0(lastQuality_);
+        if (q0.minQuality >= 1 - 1e-12 || !controlPoints_.proposeSwap(q0, d))
         {
-            // the first blend step, not the whole swap
-            r.boundaryError = interpolateDisplacement(d);
-            measureQuality(r);
+            break;
         }
-    }
-    else
-    {
-        controlPoints_.undoSwaps(d);
+        const vectorField field0(pointDisplacement_.primitiveField());
+        const pointField points0Copy(lastPoints_);
+        const dcpRBFStepLog::record r0(r);
+        r.boundaryError = interpolateDisplacement(d);
+        measureQuality(r);
+        if (lastQuality_.minQuality > q0.minQuality)
+        {
+            controlPoints_.keepSwap();
+            continue;
+        }
+        controlPoints_.undoSwap(d);
         pointDisplacement_.primitiveFieldRef() = field0;
         lastPoints_ = points0Copy;
         lastQuality_ = q0;
         r = r0;
-        r.nUndone += n;
+        ++r.nUndone;
+        break;
+    }
+    const label kept = controlPoints_.endTrials(d);
+    r.nAdded += kept;
+    r.nRemoved += kept;
+    if (kept && settings_.selection().swapBlendSteps > 1)
+    {
+        // the first blend step, not the whole swap
+        r.boundaryError = interpolateDisplacement(d);
+        measureQuality(r);
     }
 }
 
@@ -452,15 +455,19 @@ void Foam::dcpRBFMotionSolver::solve()
         r.nAdded += controlPoints_.reselect(d, r.atMaxPoints);
         r.selectTime = timer.timeIncrement();
 
-        // 3. Interpolate, snap the boundary, 4. guard the quality
+        // 3. Interpolate, snap the boundary; the new mesh's quality
         r.boundaryError = interpolateDisplacement(d);
         r.interpolateTime = timer.timeIncrement();
-        guardQuality(d, r);
+        measureQuality(r);
         r.guardTime = timer.timeIncrement();
 
-        // 5. swapRule errorGuided: a trial swap, kept if it helps
+        // 4. swapRule errorGuided: a trial swap, kept if it helps
         trySwaps(d, r);
         r.swapTime += timer.timeIncrement();
+
+        // 5. Guard the quality
+        guardQuality(d, r);
+        r.guardTime += timer.timeIncrement();
 
         r.nControl = controlPoints_.size();
         controlPoints_.endStep();

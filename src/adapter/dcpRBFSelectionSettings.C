@@ -62,9 +62,9 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     selectOn = r.getEnum("selectOn", targetNames, target::displacement);
     reselectTolerance =
         r.getScalar("reselectTolerance", min(10*tolerance, 1.0), tolerance, GREAT);
-    nSwap = r.getLabel("nSwap", 1, 0, 1000);
-    protectSteps = r.getLabel("protectSteps", 3, 0, 1000000);
     swapRule = r.getEnum("swapRule", ruleNames, rule::errorGuided);
+    nSwap = r.getLabel("nSwap", swapRule == rule::errorGuided ? 4 : 1, 0, 1000);
+    protectSteps = r.getLabel("protectSteps", 3, 0, 1000000);
     swapBlendSteps = r.getLabel("swapBlendSteps", 4, 1, 1000);
     if (swapRule == rule::nearest && dict.found("swapBlendSteps"))
     {

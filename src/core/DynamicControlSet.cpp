@@ -188,6 +188,34 @@ Eigen::Index DynamicControlSet::removeNearest(const Eigen::RowVector3d& x)
 }
 
 
+bool DynamicControlSet::swapNearest
+(
+    const Eigen::RowVector3d& join,
+    const Eigen::RowVector3d& leave
+)
+{
+    std::vector<Eigen::Index> all(candidates_.rows());
+    std::iota(all.begin(), all.end(), 0);
+    const std::vector<Eigen::Index> in =
+        nearestFirst(join, all, [&](Eigen::Index j) { return !inSet_[j]; });
+    std::vector<Eigen::Index> members(indices_.begin(), indices_.end());
+    std::vector<Eigen::Index> ageOf(candidates_.rows(), -1);
+    for (std::size_t k = 0; k < indices_.size(); ++k) ageOf[indices_[k]] = age_[k];
+    const std::vector<Eigen::Index> out = nearestFirst(leave, members, [&](Eigen::Index j)
+    {
+        return removable_[j] && ageOf[j] >= options_.protectSteps;
+    });
+    for (std::size_t a = 0; a < in.size() && a < std::size_t(options_.maxTries); ++a)
+    {
+        for (std::size_t r = 0; r < out.size() && r < std::size_t(options_.maxTries); ++r)
+        {
+            if (swap(in[a], out[r])) return true;
+        }
+    }
+    return false;
+}
+
+
 void DynamicControlSet::nextStep()
 {
     for (int& a : age_) ++a;

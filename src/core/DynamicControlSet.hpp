@@ -144,6 +144,12 @@ public:
     Eigen::Index addNearest(const Eigen::RowVector3d& x);
     Eigen::Index removeNearest(const Eigen::RowVector3d& x);
 
+    //- Both rules at once, at constant size (also at minPoints = maxPoints):
+    //  the non-member nearest to join joins, the removable old-enough
+    //  member nearest to leave leaves, in one update. Returns whether a
+    //  swap was made.
+    bool swapNearest(const Eigen::RowVector3d& join, const Eigen::RowVector3d& leave);
+
     //- One more step has passed (ages of the points grow)
     void nextStep();
 

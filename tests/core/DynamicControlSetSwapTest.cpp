@@ -197,3 +197,38 @@ TEST_F(SwapFixture, BlendIsTheConvexCombinationOfBothInterpolants)
 }
 
 } // namespace
+
+namespace
+{
+
+// The paper's rule at a fixed size (minPoints = maxPoints): the nearest
+// non-member to the worst place joins and the nearest member to the best
+// place leaves, in one update
+TEST(SwapNearest, WorksAtFixedSize)
+{
+    const Points cand = randomPoints(150, 3, 12);
+    DynamicControlSet::Options o;
+    o.minPoints = 50;
+    o.maxPoints = 50;
+    DynamicControlSet s = makeSet(cand, RadialKernel::fromName("WendlandC2", 0.6), true, 3, o);
+    s.reset(everyThird(cand.rows()));
+    ASSERT_EQ(s.size(), 50);
+    const Eigen::RowVector3d worst(0.2, 0.3, 0.4), best(0.8, 0.7, 0.6);
+    Index in = -1, out = -1;
+    double dIn = 1e300, dOut = 1e300;
+    for (Index i = 0; i < cand.rows(); ++i)
+    {
+        const double dw = (cand.row(i) - worst).squaredNorm();
+        const double db = (cand.row(i) - best).squaredNorm();
+        if (!s.contains(i) && dw < dIn) { dIn = dw; in = i; }
+        if (s.contains(i) && db < dOut) { dOut = db; out = i; }
+    }
+    EXPECT_EQ(s.addNearest(worst), -1);        // at maxPoints: no addition
+    EXPECT_EQ(s.removeNearest(best), -1);      // at minPoints: no removal
+    ASSERT_TRUE(s.swapNearest(worst, best));
+    EXPECT_EQ(s.size(), 50);
+    EXPECT_TRUE(s.contains(in));
+    EXPECT_FALSE(s.contains(out));
+}
+
+} // namespace
