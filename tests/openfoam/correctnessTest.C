@@ -238,9 +238,15 @@ TEST(DynamicSwaps, HappenOverStepsAndKeepTheWallExact)
     EXPECT_NE(first, last) << "the control set never changed";
 }
 
-//- Minimum quality per step of a growing bump on the bottom wall
-std::vector<double> minQualityPerStep(const std::string& controlPoints, label nSteps,
-    std::vector<std::vector<double>>* rowsOut = nullptr)
+//- A growing bump on the bottom wall of a boundary-layer box: the points
+//  and the rows of dcpRBF.dat after each step
+struct bumpRun
+{
+    std::vector<pointField> points;
+    std::vector<std::vector<double>> rows;
+};
+
+bumpRun runBump(const std::string& controlPoints, label nSteps)
 {
     // a boundary layer: cells 30 times thinner at the bottom wall than at
     // the top, where a reduced set's boundary error folds them first
@@ -249,6 +255,7 @@ std::vector<double> minQualityPerStep(const std::string& controlPoints, label nS
         "{ type fixedValue; value uniform (0 0 0); }", "(1 30 1)");
     autoPtr<motionSolver> ms(select(c));
     auto& solver = refCast<dcpRBFMotionSolver>(ms());
+    bumpRun b;
     for (label step = 1; step <= nSteps; ++step)
     {
         ++c.runTime();
@@ -257,13 +264,37 @@ std::vector<double> minQualityPerStep(const std::string& controlPoints, label nS
         {
             return vector(0, a*std::sin(2*constant::mathematical::pi*x.x()), 0);
         });
-        c.mesh().movePoints(ms->newPoints());
+        const pointField p(ms->newPoints());
+        c.mesh().movePoints(p);
+        b.points.push_back(p);
     }
-    const auto rows = stepRows(c);
-    if (rowsOut) *rowsOut = rows;
+    b.rows = stepRows(c);
+    return b;
+}
+
+//- Minimum quality per step of the bump run
+std::vector<double> minQualityPerStep(const std::string& controlPoints, label nSteps,
+    std::vector<std::vector<double>>* rowsOut = nullptr)
+{
+    const bumpRun b(runBump(controlPoints, nSteps));
+    if (rowsOut) *rowsOut = b.rows;
     std::vector<double> q;
-    for (const auto& row : rows) q.push_back(row[cMinQ]);
+    for (const auto& row : b.rows) q.push_back(row[cMinQ]);
     return q;
+}
+
+//- Largest change of point velocity between steps, max |x(n+1) - 2x(n) + x(n-1)|
+scalar largestJerk(const bumpRun& b)
+{
+    scalar j = 0;
+    for (std::size_t s = 1; s + 1 < b.points.size(); ++s)
+    {
+        forAll(b.points[s], i)
+        {
+            j = max(j, mag(b.points[s + 1][i] - 2*b.points[s][i] + b.points[s - 1][i]));
+        }
+    }
+    return j;
 }
 
 // The error-guided rule at fixed N (the paper's setting: no correction, no
@@ -301,6 +332,30 @@ TEST(ErrorGuidedSwaps, NeverWorseThanTheStaticSetAtFixedN)
     {
         EXPECT_GT(dynamic[s], greedy[s] + 0.5*(all[s] - greedy[s])) << "step " << s + 1;
     }
+}
+
+// A kept swap changes the interpolant; phased in over swapBlendSteps the
+// mesh velocity changes by a fraction of that jump per step. The bump grows
+// linearly: with a fixed set the points move at constant velocity, so the
+// velocity changes only through the swaps
+TEST(ErrorGuidedSwaps, PhasedInSwapsKeepTheMeshVelocitySmooth)
+{
+    const std::string fixedN =
+        "selection dynamic; tolerance 1e-12; minPoints 12; maxPoints 12;"
+        " reselectTolerance 1e9; protectSteps 0; nSwap 1;";
+    const label nSteps = 8;
+    const bumpRun atOnce(runBump(fixedN + " swapBlendSteps 1;", nSteps));
+    const bumpRun phased(runBump(fixedN + " swapBlendSteps 4;", nSteps));
+    double keptAtOnce = 0, keptPhased = 0;
+    for (const auto& row : atOnce.rows) keptAtOnce += row[cAdded];
+    for (const auto& row : phased.rows) keptPhased += row[cAdded];
+    ASSERT_GT(keptAtOnce, 0);
+    ASSERT_GT(keptPhased, 0);
+    const bumpRun greedy(runBump("selection greedy; tolerance 1e-12; minPoints 12;"
+        " maxPoints 12; reselectTolerance 1e9;", nSteps));
+    EXPECT_LT(largestJerk(greedy), 1e-12) << "the motion itself is smooth";
+    EXPECT_GT(largestJerk(atOnce), 1e-4) << "a swap at once makes the velocity jump";
+    EXPECT_LT(largestJerk(phased), 0.5*largestJerk(atOnce));
 }
 
 } // namespace
