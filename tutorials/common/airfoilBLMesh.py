@@ -24,8 +24,13 @@ Usage: airfoilBLMesh.py [output.msh] [--first-layer 1.5e-5] [--layers 30] ...
 """
 import argparse
 import math
+import os
+import sys
 
 import gmsh
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from channelPatches import extrude_and_name  # noqa: E402
 
 
 def naca0012(x):
@@ -136,17 +141,8 @@ def main():
     gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
     gmsh.option.setNumber("Mesh.Algorithm", 6)
 
-    # One cell thick: extrude the surface (lateral surfaces follow the
-    # order of the boundary curves: outer loop, then the wing)
-    out = geo.extrude([(2, surface)], 0, 0, a.span, numElements=[1], recombine=True)
-    geo.synchronize()
-    front, volume, lateral = out[0][1], out[1][1], [t for d, t in out[2:]]
-    names = {"topAndBottom": [lateral[0], lateral[2]], "outlet": [lateral[1]],
-             "inlet": [lateral[3]], "wing": lateral[4:7],
-             "frontAndBack": [surface, front]}
-    for name, tags in names.items():
-        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), name)
-    gmsh.model.setPhysicalName(3, gmsh.model.addPhysicalGroup(3, [volume]), "fluid")
+    # One cell thick, patches named (tutorials/common/channelPatches.py)
+    extrude_and_name(geo, surface, a.span, 3)
 
     gmsh.model.mesh.generate(2 if a.only_2d else 3)
     gmsh.option.setNumber("Mesh.MshFileVersion", 2.2)
