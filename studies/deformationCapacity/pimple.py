@@ -28,9 +28,11 @@ _loader.exec_module(R)
 SELECTIONS = [
     ("all", "selection all;", None),
     ("greedy (tol 1e-3)", "selection greedy; tolerance 1e-3;", None),
-    ("dynamic, paper rule", "selection dynamic; tolerance 1e-3; nSwap 1; {swapRuleNearest}", None),
-    ("dynamic, new rule", "selection dynamic; tolerance 1e-3; nSwap 1; swapRule errorGuided;",
-     "swapRule"),
+    # the library's defaults for dynamic: swapRule errorGuided, nSwap 4 (trial swaps),
+    # swapBlendSteps 4
+    ("dynamic (library default: errorGuided)", "selection dynamic; tolerance 1e-3;", None),
+    ("dynamic (paper rule: swapRule nearest)",
+     "selection dynamic; tolerance 1e-3; nSwap 1; {swapRuleNearest}", "swapRule"),
 ]
 
 
@@ -75,7 +77,7 @@ def main(a):
     os.makedirs(R.WORK, exist_ok=True)
     os.makedirs(R.RESULTS, exist_ok=True)
     mesh_dir = R.make_mesh("a")
-    swapRule = R.detect_swapRule(mesh_dir, R.MESHES["a"]["supportRadius"], "pimple_detect")
+    swapRule = R.detect_swapRule(mesh_dir, R.MESHES["a"]["supportRadius"], "pimple_detect", m="a")
     subst = dict(swapRuleNearest="swapRule nearest;" if swapRule else "")
     lines = ["pitching tutorial under pimpleFoam, +-10 deg at omega = pi, 250 steps of 0.004 s; "
              "second difference of the force coefficients over t > 0.1 (swapRule keyword: %s)\n"
