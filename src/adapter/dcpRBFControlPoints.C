@@ -502,6 +502,17 @@ Foam::label Foam::dcpRBFControlPoints::endTrials(const dcprbf::Values& d)
 }
 
 
+void Foam::dcpRBFControlPoints::abandonBlend(const dcprbf::Values& d)
+{
+    set_.restore(*blendFrom_);
+    blendFrom_.reset();
+    updated_ = true;
+    trialWait_ = trialBackoff_;
+    trialBackoff_ = min(2*trialBackoff_, maxTrialWait);
+    solve(d);
+}
+
+
 void Foam::dcpRBFControlPoints::endStep()
 {
     set_.nextStep();

@@ -286,6 +286,11 @@ void Foam::dcpRBFMotionSolver::trySwaps
     {
         return;
     }
+    const dcpRBFQualityRegion::summary noSwap(lastQuality_);
+    const vectorField noSwapField(pointDisplacement_.primitiveField());
+    const pointField noSwapPoints(lastPoints_);
+    const dcpRBFStepLog::record noSwapRecord(r);
+
     // up to nSwap trials, each kept only if the minimum quality improves
     for (label trial = 0; trial < settings_.selection().nSwap; ++trial)
     {
@@ -317,9 +322,19 @@ void Foam::dcpRBFMotionSolver::trySwaps
     r.nRemoved += kept;
     if (kept && settings_.selection().swapBlendSteps > 1)
     {
-        // the first blend step, not the whole swap
+        // the first blend step, not the whole swap: the mesh this step
+        // writes must be better than without the swaps too
         r.boundaryError = interpolateDisplacement(d);
         measureQuality(r);
+        if (!(lastQuality_.minQuality > noSwap.minQuality))
+        {
+            controlPoints_.abandonBlend(d);
+            pointDisplacement_.primitiveFieldRef() = noSwapField;
+            lastPoints_ = noSwapPoints;
+            lastQuality_ = noSwap;
+            r = noSwapRecord;
+            r.nUndone += kept;
+        }
     }
 }
 
