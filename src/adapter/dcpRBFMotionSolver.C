@@ -180,7 +180,16 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
 {
     const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
     dcprbf::Values v(evalPoints_.rows(), 3);
-    s.evaluate(evalPoints_.data(), evalPoints_.rows(), v.data());
+    const std::size_t budget = std::size_t(settings_.evaluationMemoryMB()) << 20;
+    if (stored_.prepare(s.centres(), budget))
+    {
+        // the control set's matrix is stored: one product
+        stored_.evaluate(s.weights(), s.polynomialCoeffs(), v);
+    }
+    else
+    {
+        s.evaluate(evalPoints_.data(), evalPoints_.rows(), v.data());
+    }
 
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
     boolList onBoundary(disp.size());

@@ -40,7 +40,8 @@ const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
     ({
         "movingPatches", "staticPatches", "function", "supportRadius",
         "polynomial", "controlPoints", "qualityMetric", "qualityFloor",
-        "qualityFloorAction", "guardIterations", "boundaryCorrection"
+        "qualityFloorAction", "guardIterations", "boundaryCorrection",
+        "evaluationMemoryMB"
     });
     return dict;
 }
@@ -231,6 +232,7 @@ Foam::dcpRBFSettings::dcpRBFSettings
     floorAction_ = r.getEnum("qualityFloorAction", floorActionNames, floorAction::warn);
     guardIterations_ = r.getLabel("guardIterations", 5, 0, 1000);
     boundaryCorrection_ = r.getSwitch("boundaryCorrection", true);
+    evaluationMemoryMB_ = r.getLabel("evaluationMemoryMB", 1024, 0, 1000000);
 }
 
 

@@ -17,12 +17,9 @@
 //
 // Reuse between steps: when the control set changes by a few points, every
 // weight alpha_j changes (the saddle system couples them), so s(x) has to be
-// summed over all centres again; the only exact shortcut would keep the
-// N_x x N matrix phi(|x - c_j|) (8 N bytes per point: 8 GB for 10^6 points
-// and 1000 centres), against the memory budget. assign() is O(N log N)
-// (copies and the kd-tree over the centres), negligible next to one
-// evaluation; the O(N^3) -> O(N^2) saving of dynamic control points is in
-// the factorization (IncrementalSaddleSolver).
+// summed over all centres again. The exact shortcut while the centres stay
+// the same keeps the matrix phi(|x - c_j|) (StoredEvaluation: sparse for
+// compact kernels, within a memory budget). assign() is O(N log N).
 #pragma once
 
 #include "LinearPolynomial.hpp"
@@ -68,6 +65,9 @@ public:
     std::size_t size() const { return centres_.rows(); }
     const RadialKernel& kernel() const { return kernel_; }
     const Points& centres() const { return centres_; }
+    const Values& weights() const { return alpha_; }
+    const Eigen::MatrixX3d& polynomialCoeffs() const { return beta_; }
+    const LinearPolynomial& polynomial() const { return polynomial_; }
 
 private:
     void evaluateTree(const double* x, std::size_t n, double* out) const;

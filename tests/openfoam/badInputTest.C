@@ -66,6 +66,7 @@ std::vector<badInput> catalogue()
         {"NegativeGuardIterations", mv + st + r + "guardIterations -2;", "guardIterations"},
         {"RelativeRadiusUnknownUnit", mv + st + "supportRadius 3 chords;", "movingExtent"},
         {"BoundaryCorrectionNotBool", mv + st + r + "boundaryCorrection sometimes;", "boundaryCorrection"},
+        {"NegativeEvaluationMemory", mv + st + r + "evaluationMemoryMB -1;", "evaluationMemoryMB"},
         {"MovingPatchRegexMatchesNothing", "movingPatches (\"wing.*\");" + st + r, "movingPatches"},
     };
 }

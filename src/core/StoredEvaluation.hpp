@@ -1,0 +1,76 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+// dcpRBF numerical core: an interpolant's values at fixed points (the mesh's
+// reference points) as stored weights.
+//
+// For a set of centres C the kernel matrix K = phi(|x_i - c_j|) at the fixed
+// points x_i is stored (compact kernels: sparse, only |x - c| < R, row-major;
+// global kernels: dense), with the polynomial basis Q(x). While the centres
+// are unchanged, a step costs one product: s(X) = K alpha + Q beta.
+//
+// Two sets are kept (the current one and the one before: a trial swap that
+// is undone, or a blend over the union of two sets, returns to it without a
+// rebuild). A set whose matrix would exceed the memory budget is not stored
+// (prepare() returns false): the caller evaluates on the fly instead.
+#pragma once
+#include "LinearPolynomial.hpp"
+#include "RadialKernel.hpp"
+#include <Eigen/SparseCore>
+#include <array>
+#include <vector>
+
+namespace dcprbf
+{
+
+class StoredEvaluation
+{
+public:
+    //- For the fixed points x (rows)
+    StoredEvaluation
+    (
+        const RadialKernel& kernel,
+        const LinearPolynomial& polynomial,
+        const Points& x
+    );
+
+    //- Make the matrix of these centres current: reuse a stored one with the
+    //  same centres (same order), else build it, O(nnz), into the older
+    //  slot. False (nothing stored) if it would take more than budget bytes
+    //  together with the other slot's.
+    bool prepare(const Points& centres, std::size_t budgetBytes);
+
+    //- s(X) = K alpha + Q beta for the current centres (prepare() true)
+    void evaluate(const Values& alpha, const Eigen::MatrixX3d& beta, Values& out) const;
+
+    //- Bytes held
+    std::size_t bytes() const;
+
+    //- Number of matrix builds so far
+    int builds() const { return builds_; }
+
+private:
+    struct Slot
+    {
+        Points centres;
+        // compact kernels: CSR rows (outer), columns (inner), values
+        std::vector<int> outer, inner;
+        std::vector<double> values;
+        // global kernels
+        Eigen::MatrixXd dense;
+        bool used = false;
+        std::size_t bytes() const;
+    };
+
+    //- Build the matrix of these centres into s; false (s emptied) if it
+    //  would take more than budget bytes
+    bool build(const Points& centres, std::size_t budget, Slot& s) const;
+
+    RadialKernel kernel_;
+    LinearPolynomial polynomial_;
+    Points x_;
+    Eigen::MatrixXd basis_;     // Q(x): points x polynomial size
+    std::array<Slot, 2> slots_;
+    int current_ = -1;
+    int builds_ = 0;
+};
+
+} // namespace dcprbf
