@@ -24,43 +24,63 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+std::vector<Eigen::Vector3d> Foam::dcpRBFCellQuality::faceCentres
+(
+    const labelUList& cells,
+    const pointField& p
+) const
+{
+    const faceList& faces = mesh_.faces();
+    std::vector<char> needed(faces.size(), 0);
+    for (const label celli : cells)
+    {
+        for (const label facei : mesh_.cells()[celli]) needed[facei] = 1;
+    }
+    std::vector<Eigen::Vector3d> fc(faces.size(), Eigen::Vector3d::Zero());
+    #pragma omp parallel for schedule(static)
+    for (label facei = 0; facei < faces.size(); ++facei)
+    {
+        if (!needed[facei]) continue;
+        Eigen::Vector3d s(Eigen::Vector3d::Zero());
+        for (const label pi : faces[facei]) s += Eigen::Vector3d(p[pi].x(), p[pi].y(), p[pi].z());
+        fc[facei] = s/faces[facei].size();
+    }
+    return fc;
+}
+
+
 Foam::scalar Foam::dcpRBFCellQuality::cellQuality
 (
     const label celli,
     const pointField& p0,
-    const pointField& p
+    const pointField& p,
+    const std::vector<Eigen::Vector3d>& fc0,
+    const std::vector<Eigen::Vector3d>& fc
 ) const
 {
     const cell& c = mesh_.cells()[celli];
     const faceList& faces = mesh_.faces();
 
-    // Centres as plain averages (the same construction for both meshes)
-    const auto centre = [](const face& f, const pointField& pts)
-    {
-        Eigen::Vector3d s(Eigen::Vector3d::Zero());
-        for (const label pi : f) s += Eigen::Vector3d(pts[pi].x(), pts[pi].y(), pts[pi].z());
-        return Eigen::Vector3d(s/f.size());
-    };
+    // Cell centres as plain averages of the face centres (the same
+    // construction for both meshes)
     Eigen::Vector3d cc0(Eigen::Vector3d::Zero()), cc(Eigen::Vector3d::Zero());
     for (const label facei : c)
     {
-        cc0 += centre(faces[facei], p0);
-        cc += centre(faces[facei], p);
+        cc0 += fc0[facei];
+        cc += fc[facei];
     }
     cc0 /= c.size();
     cc /= c.size();
-
     const auto vec = [](const point& x) { return Eigen::Vector3d(x.x(), x.y(), x.z()); };
     scalar q = GREAT;
     for (const label facei : c)
     {
         const face& f = faces[facei];
-        const Eigen::Vector3d fc0(centre(f, p0)), fc(centre(f, p));
         forAll(f, i)
         {
             const label a = f[i], b = f.nextLabel(i);
-            const Eigen::Vector3d ref[4] = {cc0, fc0, vec(p0[a]), vec(p0[b])};
-            const Eigen::Vector3d cur[4] = {cc, fc, vec(p[a]), vec(p[b])};
+            const Eigen::Vector3d ref[4] = {cc0, fc0[facei], vec(p0[a]), vec(p0[b])};
+            const Eigen::Vector3d cur[4] = {cc, fc[facei], vec(p[a]), vec(p[b])};
             q = min(q, dcprbf::TetQuality::compute(ref, cur, metric_));
         }
     }
@@ -77,11 +97,13 @@ Foam::scalarField Foam::dcpRBFCellQuality::compute
 {
     // Addressing is built on first use: not thread-safe, so do it here
     mesh_.cells();
+    const std::vector<Eigen::Vector3d> fc0(faceCentres(cells, p0));
+    const std::vector<Eigen::Vector3d> fc(faceCentres(cells, p));
     scalarField q(cells.size());
     #pragma omp parallel for schedule(dynamic, 64)
     for (label i = 0; i < cells.size(); ++i)
     {
-        q[i] = cellQuality(cells[i], p0, p);
+        q[i] = cellQuality(cells[i], p0, p, fc0, fc);
     }
     return q;
 }

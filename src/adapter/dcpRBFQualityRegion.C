@@ -83,19 +83,25 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     s.minQuality = s.nCells ? gMin(q) : 1;
     s.meanQuality = s.nCells ? gSum(q)/s.nCells : 1;
 
-    // Local candidates, then the global n worst and n best
-    List<rankedCell> ranked(q.size());
+    // Local candidates (the n lowest and n highest, not a full sort), then
+    // the global n worst and n best
+    std::vector<rankedCell> ranked(q.size());
     forAll(q, i)
     {
         ranked[i] = rankedCell({q[i], centres_[i][0], centres_[i][1], centres_[i][2]});
     }
-    std::sort(ranked.begin(), ranked.end());
-    const label nLocal = min(n, ranked.size());
+    const label nLocal = min(n, label(ranked.size()));
+    std::vector<rankedCell> lowest(nLocal), highest(nLocal);
+    std::partial_sort_copy(ranked.begin(), ranked.end(), lowest.begin(), lowest.end());
+    std::partial_sort_copy
+    (
+        ranked.begin(), ranked.end(), highest.begin(), highest.end(),
+        [](const rankedCell& a, const rankedCell& b) { return b < a; }
+    );
 
     List<List<rankedCell>> worstAll(Pstream::nProcs()), bestAll(Pstream::nProcs());
-    worstAll[Pstream::myProcNo()] = SubList<rankedCell>(ranked, nLocal);
-    bestAll[Pstream::myProcNo()] =
-        SubList<rankedCell>(ranked, nLocal, ranked.size() - nLocal);
+    worstAll[Pstream::myProcNo()] = List<rankedCell>(lowest.begin(), lowest.end());
+    bestAll[Pstream::myProcNo()] = List<rankedCell>(highest.begin(), highest.end());
     Pstream::gatherList(worstAll);
     Pstream::scatterList(worstAll);
     Pstream::gatherList(bestAll);
