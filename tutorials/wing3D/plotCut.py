@@ -74,10 +74,11 @@ def main():
 
     faces = readFaces("constant/polyMesh/faces")
     P0 = readPoints("constant/polyMesh/points")
-    # faces near the section only
-    near = np.abs(P0[:, 1] - a.y) < 0.1
-    near &= (P0[:, 0] > x0 - 0.2) & (P0[:, 0] < x1 + 0.2) & (np.abs(P0[:, 2]) < z1 + 0.2)
-    faces = [f for f in faces if near[f].all()]
+    # faces near the section only (a vertex in the window's neighbourhood;
+    # cut() keeps those crossing the plane)
+    near = (P0[:, 0] > x0 - 0.5) & (P0[:, 0] < x1 + 0.5) & (np.abs(P0[:, 2]) < z1 + 0.5)
+    near &= np.abs(P0[:, 1] - a.y) < 1.0
+    faces = [f for f in faces if near[f].any()]
 
     cases = [("rest", P0)] + [("t = %s s" % t, readPoints(os.path.join(t, "polyMesh", "points")))
                               for t in a.times if os.path.exists(os.path.join(t, "polyMesh", "points"))]
@@ -93,7 +94,7 @@ def main():
         ax.set_ylabel("z [m]")
     fig.tight_layout()
     os.makedirs(os.path.dirname(a.output) or ".", exist_ok=True)
-    fig.savefig(a.output, dpi=110)
+    fig.savefig(a.output, dpi=72)
     print("plotCut: " + a.output)
 
 
