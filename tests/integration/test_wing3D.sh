@@ -2,14 +2,16 @@
 # Integration test: the wing3D tutorial shortened (coarse mesh, 5 steps to
 # the full bending and twist at t = 0.25): moveDynamicMesh with
 # wingBendingTwistDisplacement and dcpRBF, checkMesh passes at the written
-# time, and the tip's leading-edge point is where the formula puts it.
+# time, and the tip's leading-edge point is where the formula puts it; the
+# same on 2 processors gives the serial points.
 
 # pointsFile FILE: the points of a polyMesh/points file, "x y z" a line
 pointsFile() {
     awk '/^\(.*\)$/ && NF == 3 { gsub(/[()]/, ""); print }' "$1"
 }
 
-test_wing3D_bendTwist_meshValidTipAsFormula() {
+# wing3DCoarse: the tutorial's case on its coarse mesh, to t = 0.25 in 5 steps
+wing3DCoarse() {
     local py tut="$top/tutorials/wing3D"
     py=$(pythonWithGmsh) || fail "no python with gmsh" || return 1
     "$py" "$tut/wingMesh.py" wing.msh --coarse > log.mesh 2>&1 || fail "gmsh failed: $(tail -3 log.mesh)" || return 1
@@ -21,6 +23,10 @@ test_wing3D_bendTwist_meshValidTipAsFormula() {
     foamDictionary constant/polyMesh/boundary -entry entry0/wing/type -set wall > /dev/null
     foamDictionary system/controlDict -entry endTime -set 0.25 > /dev/null
     foamDictionary system/controlDict -entry deltaT -set 0.05 > /dev/null
+}
+
+test_wing3D_bendTwist_meshValidTipAsFormula() {
+    wing3DCoarse || return 1
     run moveDynamicMesh || return 1
     grep -q "dcpRBF: .* control points (WendlandC2.*3D" log.moveDynamicMesh || fail "no dcpRBF log line"
     meshOkAtEveryTime || return 1
@@ -41,4 +47,16 @@ test_wing3D_bendTwist_meshValidTipAsFormula() {
         }
         END { if (n != 1) { print "found " n " tip LE points"; exit 1 } exit bad }' \
         || fail "tip not where the formula puts it"
+}
+
+# The same motion on 2 processors (the tutorial's hierarchical decomposition,
+# split in x through the wing) gives the serial points (parallelEqualsSerial,
+# test_parallel.sh: 1e-10 of the domain size); decomposePar keeps the wing's
+# wingBendingTwistDisplacement condition
+test_wing3D_parallelEqualsSerial() {
+    wing3DCoarse || return 1
+    parallelEqualsSerial 0.25 'method hierarchical; coeffs { n (2 1 1); order xyz; }' || return 1
+    grep -q wingBendingTwistDisplacement par/processor0/0/pointDisplacement \
+        && grep -q wingBendingTwistDisplacement par/processor1/0/pointDisplacement \
+        || fail "decomposePar lost wingBendingTwistDisplacement"
 }

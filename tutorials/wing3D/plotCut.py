@@ -1,10 +1,11 @@
 #!/usr/bin/python3
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 """Cut of the mesh by the plane y = Y (default: mid semi-span) at rest and at
-written times, near the wing section: images/cut.png. Reads the ASCII
-polyMesh (constant/polyMesh/faces, points of each time).
+written times, near the wing section: images/cut.png (--output). Reads the
+ASCII polyMesh (constant/polyMesh/faces, points of each time). The window
+follows the section (leading edge, chord and deflection at y = Y).
 
-Usage: plotCut.py [--y 0.6] [--times 0.25 0.75]
+Usage: plotCut.py [--y 0.6] [--times 0.25 0.75] [--output images/cut.png]
 """
 import argparse
 import os
@@ -59,30 +60,42 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--y", type=float, default=0.6)
     ap.add_argument("--times", nargs="*", default=["0.25", "0.75"])
+    ap.add_argument("--output", default="images/cut.png")
     a = ap.parse_args()
+
+    # the section at y (ONERA M6 planform, wingMesh.py), the tip deflection
+    # 0.15 (y/b)^2 at the extremes
+    b = 1.1963
+    xle = a.y*np.tan(np.radians(30.0))
+    c = 0.806 + (0.453 - 0.806)*min(a.y, b)/b
+    w = 0.15*min(a.y/b, 1.0)**2
+    x0, x1 = xle - 0.35*c, xle + 1.35*c
+    z0, z1 = -w - 0.45*c, w + 0.45*c
 
     faces = readFaces("constant/polyMesh/faces")
     P0 = readPoints("constant/polyMesh/points")
-    # faces near the section only
-    near = np.abs(P0[:, 1] - a.y) < 0.1
-    near &= (P0[:, 0] > 0.1) & (P0[:, 0] < 1.4) & (np.abs(P0[:, 2]) < 0.4)
-    faces = [f for f in faces if near[f].all()]
+    # faces near the section only (a vertex in the window's neighbourhood;
+    # cut() keeps those crossing the plane)
+    near = (P0[:, 0] > x0 - 0.5) & (P0[:, 0] < x1 + 0.5) & (np.abs(P0[:, 2]) < z1 + 0.5)
+    near &= np.abs(P0[:, 1] - a.y) < 1.0
+    faces = [f for f in faces if near[f].any()]
 
     cases = [("rest", P0)] + [("t = %s s" % t, readPoints(os.path.join(t, "polyMesh", "points")))
                               for t in a.times if os.path.exists(os.path.join(t, "polyMesh", "points"))]
-    fig, axes = plt.subplots(1, len(cases), figsize=(5*len(cases), 4), squeeze=False)
+    fig, axes = plt.subplots(1, len(cases), figsize=(4.5*len(cases), 4.5*(z1 - z0)/(x1 - x0) + 0.8),
+                             squeeze=False)
     for ax, (title, P) in zip(axes[0], cases):
         ax.add_collection(LineCollection(cut(P, faces, a.y), linewidths=0.3, colors="k"))
-        ax.set_xlim(0.3, 1.25)
-        ax.set_ylim(-0.3, 0.35)
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(z0, z1)
         ax.set_aspect("equal")
         ax.set_title("%s, cut y = %g m" % (title, a.y))
         ax.set_xlabel("x [m]")
         ax.set_ylabel("z [m]")
     fig.tight_layout()
-    os.makedirs("images", exist_ok=True)
-    fig.savefig("images/cut.png", dpi=150)
-    print("plotCut: images/cut.png")
+    os.makedirs(os.path.dirname(a.output) or ".", exist_ok=True)
+    fig.savefig(a.output, dpi=72)
+    print("plotCut: " + a.output)
 
 
 if __name__ == "__main__":
