@@ -37,3 +37,8 @@ dcprbf_warnings(dcprbfCore)
 # the core is also built by wmake for OpenFOAM v1912, whose default is C++14
 set_target_properties(dcprbfCore PROPERTIES CXX_STANDARD 14)
 target_link_libraries(dcprbfCore PUBLIC Eigen3::Eigen OpenMP::OpenMP_CXX)
+# Eigen's own threading (products) blocks by the number of threads: results
+# would depend on it at round-off, and a greedy selection near a tie would
+# pick other points on 1 and on 2 threads. The core threads its loops itself
+# (OpenMP, per point: the same result whatever the thread count).
+target_compile_definitions(dcprbfCore PUBLIC EIGEN_DONT_PARALLELIZE)
