@@ -130,6 +130,21 @@ EOT
         "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5;"
 }
 
+# bentBodyPointDisplacement STATIC: the body follows the mapped bending
+# (constant/boundaryData/body, written by manualDecomposition); STATIC
+# (a patch name or regex) stays put
+bentBodyPointDisplacement() {
+    writeFile 0/pointDisplacement pointVectorField <<EOT
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    body { type timeVaryingMappedFixedValue; mapMethod nearest; value uniform (0 0 0); }
+    $1 { type fixedValue; value uniform (0 0 0); }
+}
+EOT
+}
+
 # the hollow cube (26 blocks), its body bent and stretched (non-rigid)
 test_parallelManual_cube3D_bendingBody_equalsSerial() {
     write_cubeIn26Blocks 4
@@ -138,15 +153,7 @@ test_parallelManual_cube3D_bendingBody_equalsSerial() {
     # cut through the body and the outer box
     manualDecomposition 0.1 "body" "outer" "moving" \
         -v bendPatch=body -v bend="0.3 0 0.2" -v threeD=1 -v dir=constant/boundaryData/body || return 1
-    writeFile 0/pointDisplacement pointVectorField <<'EOT'
-dimensions [0 1 0 0 0 0 0];
-internalField uniform (0 0 0);
-boundaryField
-{
-    body { type timeVaryingMappedFixedValue; mapMethod nearest; value uniform (0 0 0); }
-    outer { type fixedValue; value uniform (0 0 0); }
-}
-EOT
+    bentBodyPointDisplacement outer
     everySelectionParallelEqualsSerial 0.5 "movingPatches (body); staticPatches (outer); supportRadius 1.5;"
 }
 
@@ -171,14 +178,6 @@ test_parallelManual_cube3D_staticLid_equalsSerial() {
     foamDictionary system/controlDict -entry endTime -set 0.5 > /dev/null
     manualDecomposition 0.1 "body" "outer lid" "moving mixed" \
         -v bendPatch=body -v bend="0.3 0 0.2" -v threeD=1 -v dir=constant/boundaryData/body || return 1
-    writeFile 0/pointDisplacement pointVectorField <<'EOT'
-dimensions [0 1 0 0 0 0 0];
-internalField uniform (0 0 0);
-boundaryField
-{
-    body { type timeVaryingMappedFixedValue; mapMethod nearest; value uniform (0 0 0); }
-    "(outer|lid)" { type fixedValue; value uniform (0 0 0); }
-}
-EOT
+    bentBodyPointDisplacement "(outer|lid)"
     everySelectionParallelEqualsSerial 0.5 "movingPatches (body); staticPatches (outer lid); supportRadius 1.5;"
 }
