@@ -178,6 +178,6 @@ test_parallelManual_cube3D_staticLid_equalsSerial() {
     foamDictionary system/controlDict -entry endTime -set 0.5 > /dev/null
     manualDecomposition 0.1 "body" "outer lid" "moving mixed" \
         -v bendPatch=body -v bend="0.3 0 0.2" -v threeD=1 -v dir=constant/boundaryData/body || return 1
-    bentBodyPointDisplacement "(outer|lid)"
+    bentBodyPointDisplacement '"(outer|lid)"'
     everySelectionParallelEqualsSerial 0.5 "movingPatches (body); staticPatches (outer lid); supportRadius 1.5;"
 }
