@@ -32,6 +32,7 @@
 #include "IncrementalSaddleSolver.hpp"
 #include "RbfEvaluator.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -184,5 +185,29 @@ private:
     std::vector<char> inSet_;
     std::vector<int> age_;   // per centre, steps since it joined
 };
+
+
+// * * * * * * * * * * * * * * * Template definitions * * * * * * * * * * * * //
+
+template<class Pred>
+inline std::vector<Eigen::Index> DynamicControlSet::nearestFirst
+(
+    const Eigen::RowVector3d& x,
+    const std::vector<Eigen::Index>& pool,
+    Pred accept
+) const
+{
+    std::vector<std::pair<double, Eigen::Index>> d;
+    for (const Eigen::Index i : pool)
+    {
+        if (accept(i)) d.emplace_back((candidates_.row(i) - x).squaredNorm(), i);
+    }
+    const std::size_t n = std::min<std::size_t>(d.size(), options_.maxTries);
+    std::partial_sort(d.begin(), d.begin() + n, d.end());
+    std::vector<Eigen::Index> out(n);
+    for (std::size_t k = 0; k < n; ++k) out[k] = d[k].second;
+    return out;
+}
+
 
 } // namespace dcprbf

@@ -1,0 +1,124 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF: radial-basis-function mesh motion with dynamic control points
+-------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
+-------------------------------------------------------------------------------
+Description
+    dcpRBFControlPoints, continued: the trial swaps of swapRule errorGuided
+    (propose, keep, undo) and the start and end of their blend.
+\*---------------------------------------------------------------------------*/
+
+#include "dcpRBFControlPoints.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::dcpRBFControlPoints::canTrial() const
+{
+    const dcpRBFSelectionSettings& s = settings_.selection();
+    return
+        ready_ && !blendFrom_ && trialWait_ == 0 && s.nSwap > 0
+     && s.selection == dcpRBFSelectionSettings::mode::dynamic
+     && s.swapRule == dcpRBFSelectionSettings::rule::errorGuided;
+}
+
+
+bool Foam::dcpRBFControlPoints::proposeSwap
+(
+    const dcpRBFQualityRegion::summary& q,
+    const dcprbf::Values& d
+)
+{
+    if (q.worst.empty())
+    {
+        return false;
+    }
+    // Joining: near the worst cell, among the joinNeighbours nearest
+    // candidates, the one of largest error / distance
+    static const int joinNeighbours = 8;
+    const dcprbf::Values error(d - set_.evaluator().evaluate(boundary_.points()));
+    const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
+    const Eigen::RowVector3d x(q.worst[0][1], q.worst[0][2], q.worst[0][3]);
+    const Eigen::Index in = set_.mostInaccurateNear(x, error, joinNeighbours, 1e-9*dMax);
+    if (in < 0)
+    {
+        return false;
+    }
+
+    // Leaving: the moving control point whose removal costs least
+    const dcprbf::DynamicControlSet::State before(set_.state());
+    for (const Eigen::Index out : set_.removalOrder(set_.leaveOneOutErrors(d)))
+    {
+        if (set_.swap(in, out))
+        {
+            if (!stepFrom_)
+            {
+                stepFrom_.reset(new dcprbf::DynamicControlSet::State(before));
+                nKept_ = 0;
+            }
+            trialFrom_.reset(new dcprbf::DynamicControlSet::State(before));
+            solve(d);
+            return true;
+        }
+    }
+    return false;
+}
+
+
+void Foam::dcpRBFControlPoints::keepSwap()
+{
+    trialFrom_.reset();
+    ++nKept_;
+    updated_ = true;
+}
+
+
+void Foam::dcpRBFControlPoints::undoSwap(const dcprbf::Values& d)
+{
+    set_.restore(*trialFrom_);
+    trialFrom_.reset();
+    solve(d);
+}
+
+
+Foam::label Foam::dcpRBFControlPoints::endTrials(const dcprbf::Values& d)
+{
+    if (!stepFrom_)
+    {
+        return 0;
+    }
+    const label kept = nKept_;
+    if (kept == 0)
+    {
+        // the set fits the motion: try again later, less often while it does
+        trialWait_ = trialBackoff_;
+        trialBackoff_ = min(2*trialBackoff_, maxTrialWait);
+    }
+    else
+    {
+        trialBackoff_ = 1;
+        if (settings_.selection().swapBlendSteps > 1)
+        {
+            blendFrom_ = std::move(stepFrom_);
+            blendStep_ = 1;
+            solve(d);
+        }
+    }
+    stepFrom_.reset();
+    nKept_ = 0;
+    return kept;
+}
+
+
+void Foam::dcpRBFControlPoints::abandonBlend(const dcprbf::Values& d)
+{
+    set_.restore(*blendFrom_);
+    blendFrom_.reset();
+    updated_ = true;
+    trialWait_ = trialBackoff_;
+    trialBackoff_ = min(2*trialBackoff_, maxTrialWait);
+    solve(d);
+}
+
+// ************************************************************************* //
