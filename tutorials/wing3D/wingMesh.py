@@ -132,7 +132,7 @@ def main():
     defaults = {  # size-wing size-edge size-far layers first-height growth
         "coarse":  (0.06, 0.02, 1.2, 3, 2e-4, 1.3),
         "default": (0.03, 0.008, 0.6, 6, 2e-4, 1.3),
-        "fine":    (0.008, 0.002, 0.3, 14, 5e-5, 1.25),    # > 1M points
+        "fine":    (0.006, 0.002, 0.3, 10, 5e-5, 1.2),     # 2.35M points
     }[level]
     hw = a.size_wing or defaults[0]
     he = a.size_edge or defaults[1]
