@@ -16,13 +16,12 @@ import sys
 import gmsh
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from channelPatches import extrude_and_name  # noqa: E402
+from airfoilChannel import extrude_and_name, naca0012 as naca0012Law  # noqa: E402
 
 
 def naca0012(x):
-    """Half thickness of NACA0012 with a closed trailing edge."""
-    return 0.6*(0.2969*math.sqrt(x) - 0.1260*x - 0.3516*x**2
-                + 0.2843*x**3 - 0.1036*x**4)
+    """Half thickness of NACA0012 (closed trailing edge)."""
+    return naca0012Law(x, True)
 
 
 def main():
@@ -76,7 +75,7 @@ def main():
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
     gmsh.option.setNumber("Mesh.Algorithm", 6)
 
-    # One cell thick, patches named (tutorials/common/channelPatches.py)
+    # One cell thick, patches named (tutorials/common/airfoilChannel.py)
     extrude_and_name(geo, surface, a.span, 2)
 
     gmsh.model.mesh.generate(3)

@@ -1,7 +1,17 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
-"""Shared by the 2D airfoil mesh scripts: extrude a channel surface one cell
-thick and name the patches for gmshToFoam."""
+"""Shared by the 2D airfoil mesh scripts: the NACA0012 thickness law, and the
+extrusion of a channel surface one cell thick with the patches named for
+gmshToFoam."""
+import math
+
 import gmsh
+
+
+def naca0012(x, closed_trailing_edge):
+    """Half thickness of NACA0012 at x (chord 1): the standard law (blunt
+    trailing edge, 0.25 % of the chord) or the closed-trailing-edge variant."""
+    a4 = 0.1036 if closed_trailing_edge else 0.1015
+    return 0.6*(0.2969*math.sqrt(x) - 0.1260*x - 0.3516*x**2 + 0.2843*x**3 - a4*x**4)
 
 
 def extrude_and_name(geo, surface, span, n_wing_curves):
