@@ -34,6 +34,10 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < label(evalPoints.rows()); ++i)
     {
+        if (boundary.kind(i) != dcpRBFBoundaryPoints::interiorPoint)
+        {
+            continue;
+        }
         double d2 = 0;
         nearest_[i] = tree.nearest(evalPoints.row(i).data(), d2);
         distance_[i] = std::sqrt(d2);
@@ -46,7 +50,6 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
 Foam::scalar Foam::dcpRBFBoundaryCorrection::apply
 (
     const dcprbf::Values& error,
-    const boolList& skip,
     const dcpRBFPlaneProjection& projection,
     vectorField& displacement
 ) const
@@ -60,7 +63,7 @@ Foam::scalar Foam::dcpRBFBoundaryCorrection::apply
     const dcprbf::kernels::WendlandC2 phi{1.0/R};
     forAll(displacement, i)
     {
-        if (!skip[i] && nearest_[i] >= 0 && distance_[i] < R)
+        if (nearest_[i] >= 0 && distance_[i] < R)
         {
             displacement[i] +=
                 phi(distance_[i])*projection.fromCore(error.row(nearest_[i]).data());

@@ -192,11 +192,9 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     }
 
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
-    boolList onBoundary(disp.size());
     forAll(disp, pointi)
     {
         const auto kind = boundaryPoints_.kind(pointi);
-        onBoundary[pointi] = kind != dcpRBFBoundaryPoints::interiorPoint;
         disp[pointi] =
             kind == dcpRBFBoundaryPoints::interiorPoint
           ? projection_.fromCore(v.row(pointi).data())
@@ -207,7 +205,7 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     const dcprbf::Values error(d - s.evaluate(boundaryPoints_.points()));
     if (settings_.boundaryCorrection())
     {
-        correction_.apply(error, onBoundary, projection_, disp);
+        correction_.apply(error, projection_, disp);
     }
     constrain();
 

@@ -23,6 +23,7 @@ Defaults: 17738 cells (8154 hexahedra, 9584 prisms), Mesh OK in checkMesh.
 Usage: airfoilBLMesh.py [output.msh] [--first-layer 1.5e-5] [--layers 30] ...
 """
 import argparse
+import functools
 import math
 import os
 import sys
@@ -32,10 +33,7 @@ import gmsh
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 from airfoilChannel import extrude_and_name, naca0012 as naca0012Law  # noqa: E402
 
-
-def naca0012(x):
-    """Half thickness of NACA0012 (blunt trailing edge)."""
-    return naca0012Law(x, False)
+naca0012 = functools.partial(naca0012Law, closed_trailing_edge=False)
 
 
 def main():

@@ -9,6 +9,7 @@ frontAndBack (z = 0 and z = span).
 Usage: naca0012Mesh.py [output.msh] [--size-wing 0.02] [--size-far 0.6]
 """
 import argparse
+import functools
 import math
 import os
 import sys
@@ -18,10 +19,7 @@ import gmsh
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 from airfoilChannel import extrude_and_name, naca0012 as naca0012Law  # noqa: E402
 
-
-def naca0012(x):
-    """Half thickness of NACA0012 (closed trailing edge)."""
-    return naca0012Law(x, True)
+naca0012 = functools.partial(naca0012Law, closed_trailing_edge=True)
 
 
 def main():
