@@ -191,6 +191,10 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
         s.evaluate(evalPoints_.data(), evalPoints_.rows(), v.data());
     }
 
+    if (rotation_.active())
+    {
+        v += rotation_.displacement();
+    }
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
     forAll(disp, pointi)
     {
@@ -324,7 +328,13 @@ void Foam::dcpRBFMotionSolver::solve()
     // 2. This step's boundary displacement (one evaluation of the
     //    conditions); (re)selection
     readPrescribed();
-    const dcprbf::Values d(boundaryPoints_.gather(prescribed_));
+    dcprbf::Values d(boundaryPoints_.gather(prescribed_));
+    if (rotation_.active())
+    {
+        // the bodies' rigid motions blended; the RBF interpolates the rest
+        d = rotation_.fit(d);
+        rotation_.report(Info);
+    }
     if (controlPoints_.select(d))
     {
         controlPoints_.solve(d);
@@ -351,6 +361,23 @@ void Foam::dcpRBFMotionSolver::solve()
         {
             writeControlPoints(d);
         }
+    }
+    else if (rotation_.active())
+    {
+        // Rigid bodies: the blended rigid motions alone
+        vectorField& disp = pointDisplacement_.primitiveFieldRef();
+        forAll(disp, pointi)
+        {
+            disp[pointi] =
+                boundaryPoints_.kind(pointi) == dcpRBFBoundaryPoints::interiorPoint
+              ? projection_.fromCore(rotation_.displacement().row(pointi).data())
+              : prescribed_[pointi];
+        }
+        constrain();
+        r.interpolateTime = timer.timeIncrement();
+        measureQuality(r);
+        guardQuality(d, r);
+        r.guardTime = timer.timeIncrement();
     }
     else
     {

@@ -104,7 +104,12 @@ void Foam::dcpRBFMotionSolver::guardQuality
         {
             break;
         }
-        if (iter >= settings_.guardIterations() || !controlPoints_.addNear(q.worst[0]))
+        if
+        (
+            iter >= settings_.guardIterations()
+         || !controlPoints_.ready()
+         || !controlPoints_.addNear(q.worst[0])
+        )
         {
             const word t(mesh().time().timeName());
             if (settings_.onFloorFailure() == dcpRBFSettings::floorAction::stop)
@@ -129,6 +134,12 @@ void Foam::dcpRBFMotionSolver::guardQuality
         measureQuality(r);
     }
 
+    warnInverted(r);
+}
+
+
+void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) const
+{
     if (lastQuality_.nInverted)
     {
         WarningInFunction
@@ -136,6 +147,7 @@ void Foam::dcpRBFMotionSolver::guardQuality
             << lastQuality_.nInverted << " inverted or degenerate cells"
             << " (quality <= 0, minimum " << r.minQuality << "). The mesh is"
             << " invalid: reduce the motion per step, enlarge supportRadius"
+            << (rotation_.active() ? "" : ", try rotationInterpolation true")
             << " or use selection dynamic with a qualityFloor." << endl;
     }
 }

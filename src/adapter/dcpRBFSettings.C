@@ -41,7 +41,7 @@ const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
         "movingPatches", "staticPatches", "function", "supportRadius",
         "polynomial", "controlPoints", "qualityMetric", "qualityFloor",
         "qualityFloorAction", "guardIterations", "boundaryCorrection",
-        "evaluationMemoryMB"
+        "evaluationMemoryMB", "rotationInterpolation", "rotation"
     });
     return dict;
 }
@@ -63,7 +63,18 @@ Foam::labelList Foam::dcpRBFSettings::readPatches
             << " names, regular expressions or groups among "
             << patches.names() << exit(FatalIOError);
     }
+    return matchPatches(dict, keyword, matchers, patches);
+}
 
+
+Foam::labelList Foam::dcpRBFSettings::matchPatches
+(
+    const dictionary& dict,
+    const word& keyword,
+    const wordRes& matchers,
+    const polyBoundaryMesh& patches
+)
+{
     labelHashSet ids;
     for (const wordRe& m : matchers)
     {

@@ -28,6 +28,15 @@ Eigen::Vector3d RigidMotion::displacement(const Eigen::Vector3d& x) const
 }
 
 
+RigidMotion RigidMotion::about(const Eigen::Vector3d& c) const
+{
+    RigidMotion m(*this);
+    m.centre = c;
+    m.translation = centre + translation - c + rotationMatrix(rotation)*(c - centre);
+    return m;
+}
+
+
 Eigen::Matrix3d rotationMatrix(const Eigen::Vector3d& omega)
 {
     const double angle = omega.norm();

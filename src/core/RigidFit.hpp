@@ -32,6 +32,9 @@ struct RigidMotion
 
     //- Displacement of reference point x under this motion
     Eigen::Vector3d displacement(const Eigen::Vector3d& x) const;
+
+    //- The same motion written about another centre (translation adjusted)
+    RigidMotion about(const Eigen::Vector3d& c) const;
 };
 
 //- Rotation matrix of rotation vector omega (Rodrigues)

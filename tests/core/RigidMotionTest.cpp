@@ -53,6 +53,21 @@ TEST(RigidFit, RecoversA3DRigidMotion)
 }
 
 
+TEST(RigidFit, AboutAnotherCentreIsTheSameMotion)
+{
+    const Points x0 = test::randomPoints(10, 3, 4);
+    const Values d = moved(x0, {0.3, 2.0, -1.0}, {0.25, 0, 0}, {0.1, 0.2, 0.3});
+    const RigidMotion m = fitRigidMotion(x0, d, 3);
+    const RigidMotion p = m.about({0.25, 0, 0});
+    EXPECT_LT((p.translation - Eigen::Vector3d(0.1, 0.2, 0.3)).norm(), 1e-12);
+    for (Eigen::Index i = 0; i < x0.rows(); ++i)
+    {
+        const Eigen::Vector3d x(x0.row(i).transpose());
+        EXPECT_LT((p.displacement(x) - m.displacement(x)).norm(), 1e-12);
+    }
+}
+
+
 TEST(RigidFit, TwoDimensionalAngleGrowsPastHalfATurn)
 {
     const Points x0 = test::randomPoints(30, 2, 3);

@@ -1,0 +1,63 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+// dcpRBF numerical core: the weights s_b(x) that blend the rigid motions of
+// moving bodies into the volume (BlendedRigidMotion): 1 on body b, 0 on the
+// static boundary and on the other bodies.
+//
+// The weights are radial about each body's centre c_b (the centre of its
+// rotation: give the pivot of a pitching body): with r = |x - c_b|,
+// R_in the largest distance of the body's points from c_b and R_out the
+// smallest distance of any static point or other body's point,
+//
+//     s_b = 1                                for r <= R_in
+//     s_b = log(R_out / r) / log(R_out / R_in) in between
+//     s_b = 0                                for r >= R_out.
+//
+// Why radial: the map x -> c + R(a s(x)) (x - c) has the Jacobian
+// determinant 1 + a ds/dphi (phi the angle about c), so a blend that does
+// not vary along circles about c never folds in the continuum, whatever the
+// angle a; the whole disc r <= R_in, body and boundary layer, turns rigidly.
+// The logarithm spreads the twist evenly in log r, i.e. evenly over cells
+// that grow in proportion to r (the shear r s'(r) a is constant). Where
+// circles around several bodies overlap, the weights are scaled to sum to 1.
+// R_out <= R_in (a static boundary or another body inside the body's
+// circle) leaves no room for a twist: Error, naming the body.
+#pragma once
+
+#include "Types.hpp"
+
+#include <vector>
+
+namespace dcprbf
+{
+
+class BodyBlend
+{
+public:
+
+    //- boundary: the boundary points (n x 3); bodyOf: per point its body
+    //  (0 .. centres.size() - 1) or -1 (static); centres: per body the
+    //  centre of its rotation. Throws Error for inconsistent sizes, a body
+    //  without points, or no room between a body and the static boundary.
+    BodyBlend
+    (
+        const Points& boundary,
+        const std::vector<int>& bodyOf,
+        const std::vector<Eigen::Vector3d>& centres
+    );
+
+    //- Weights at points x (x.rows() x bodies), threaded per point
+    Eigen::MatrixXd weights(const Points& x) const;
+
+    //- Per body: the radius turning rigidly (R_in) and where the weight
+    //  reaches 0 (R_out)
+    double innerRadius(int body) const { return inner_[body]; }
+    double outerRadius(int body) const { return outer_[body]; }
+
+private:
+
+    std::vector<Eigen::Vector3d> centres_;
+    std::vector<double> inner_;
+    std::vector<double> outer_;
+};
+
+} // namespace dcprbf

@@ -1,0 +1,122 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+// Unit tests of the radial blend weights of moving bodies.
+#include "BlendedRigidMotion.hpp"
+#include "BodyBlend.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace dcprbf;
+
+namespace
+{
+
+//- n points on the circle of radius r about c (z = 0)
+Points ring(int n, double r, const Eigen::Vector3d& c = Eigen::Vector3d::Zero())
+{
+    Points p(n, 3);
+    for (int i = 0; i < n; ++i)
+    {
+        const double a = 2*EIGEN_PI*i/n;
+        p.row(i) << c.x() + r*std::cos(a), c.y() + r*std::sin(a), 0;
+    }
+    return p;
+}
+
+//- Body: an ellipse of semi-axes (0.5, 0.1) about the origin; walls: the
+//  square |x|, |y| = 2
+struct Channel
+{
+    Points boundary;
+    std::vector<int> bodyOf;
+    Channel()
+    {
+        const int nb = 40, nw = 80;
+        boundary.resize(nb + nw, 3);
+        for (int i = 0; i < nb; ++i)
+        {
+            const double a = 2*EIGEN_PI*i/nb;
+            boundary.row(i) << 0.5*std::cos(a), 0.1*std::sin(a), 0;
+            bodyOf.push_back(0);
+        }
+        for (int i = 0; i < nw; ++i)
+        {
+            const double t = -2 + 4.0*(i/4)/(nw/4);
+            const int side = i % 4;
+            boundary.row(nb + i) << (side == 0 ? 2 : side == 1 ? -2 : t),
+                                    (side == 2 ? 2 : side == 3 ? -2 : t), 0;
+            bodyOf.push_back(-1);
+        }
+    }
+};
+
+} // namespace
+
+
+TEST(BodyBlend, OneOnTheBodyZeroOnTheWallsRadialInBetween)
+{
+    const Channel ch;
+    const BodyBlend blend(ch.boundary, ch.bodyOf, {Eigen::Vector3d::Zero()});
+    EXPECT_NEAR(blend.innerRadius(0), 0.5, 1e-14);
+    EXPECT_NEAR(blend.outerRadius(0), 2, 1e-14);
+    const Eigen::MatrixXd w = blend.weights(ch.boundary);
+    for (Eigen::Index i = 0; i < ch.boundary.rows(); ++i)
+    {
+        EXPECT_EQ(w(i, 0), ch.bodyOf[i] == 0 ? 1.0 : 0.0) << i;
+    }
+    // constant on circles, log-linear in r
+    const Eigen::MatrixXd c = blend.weights(ring(16, 1.0));
+    EXPECT_LT((c.array() - std::log(2.0)/std::log(4.0)).abs().maxCoeff(), 1e-14);
+}
+
+
+TEST(BodyBlend, RingTurnsByTheBlendedAngleAndStaysARing)
+{
+    // a rigid turn of 150 deg: a ring of points between body and walls turns
+    // by s(r) times 150 deg and keeps its radius (no point leaves its circle)
+    const Channel ch;
+    const BodyBlend blend(ch.boundary, ch.bodyOf, {Eigen::Vector3d::Zero()});
+    RigidMotion m;
+    m.rotation = {0, 0, 150*EIGEN_PI/180};
+    const Points x = ring(36, 1.2);
+    Values d;
+    blendedRigidDisplacement({m}, x, blend.weights(x), d);
+    const double s = std::log(2/1.2)/std::log(4.0);
+    for (Eigen::Index i = 0; i < x.rows(); ++i)
+    {
+        const Eigen::Vector3d p = x.row(i).transpose(), q = p + d.row(i).transpose();
+        EXPECT_NEAR(q.norm(), 1.2, 1e-13);
+        EXPECT_NEAR(std::atan2(p.x()*q.y() - p.y()*q.x(), p.dot(q)), s*150*EIGEN_PI/180, 1e-13);
+    }
+}
+
+
+TEST(BodyBlend, OverlappingBodiesSumToAtMostOne)
+{
+    Points b(4, 3);
+    b << -1, 0, 0,   -0.6, 0, 0,   0.6, 0, 0,   1, 0, 0;
+    Points walls = ring(40, 5);
+    Points all(44, 3);
+    all << b, walls;
+    std::vector<int> bodyOf{0, 0, 1, 1};
+    bodyOf.resize(44, -1);
+    const BodyBlend blend(all, bodyOf, {Eigen::Vector3d(-0.8, 0, 0), Eigen::Vector3d(0.8, 0, 0)});
+    const Eigen::MatrixXd w = blend.weights(ring(50, 0.5, Eigen::Vector3d(0, 0.2, 0)));
+    EXPECT_LE(w.rowwise().sum().maxCoeff(), 1 + 1e-14);
+    EXPECT_GT(w.minCoeff(), -1e-300);
+    const Eigen::MatrixXd onBodies = blend.weights(b);
+    EXPECT_EQ(onBodies(0, 0), 1); EXPECT_EQ(onBodies(0, 1), 0);
+    EXPECT_EQ(onBodies(3, 1), 1); EXPECT_EQ(onBodies(3, 0), 0);
+}
+
+
+TEST(BodyBlend, RefusesAWallInsideTheBodysCircle)
+{
+    Channel ch;
+    ch.boundary.row(ch.boundary.rows() - 1) << 0.3, 0.3, 0;   // wall point at r 0.42 < 0.5
+    EXPECT_THROW(BodyBlend(ch.boundary, ch.bodyOf, {Eigen::Vector3d::Zero()}), Error);
+    EXPECT_THROW(BodyBlend(ch.boundary, std::vector<int>(3, 0), {Eigen::Vector3d::Zero()}), Error);
+    std::vector<int> noBody(ch.bodyOf.size(), -1);
+    EXPECT_THROW(BodyBlend(ch.boundary, noBody, {Eigen::Vector3d::Zero()}), Error);
+}
