@@ -76,9 +76,9 @@ Eigen::MatrixXd BodyBlend::weights(const Points& x) const
         {
             const double r = (x.row(i).transpose() - centres_[b]).norm();
             double s = 0;
-            if (r <= inner_[b])
+            if (r <= inner_[b] || std::isinf(outer_[b]))
             {
-                s = 1;
+                s = 1;  // inside, or nothing static: the body's motion
             }
             else if (r < outer_[b])
             {

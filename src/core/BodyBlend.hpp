@@ -19,6 +19,8 @@
 // The logarithm spreads the twist evenly in log r, i.e. evenly over cells
 // that grow in proportion to r (the shear r s'(r) a is constant). Where
 // circles around several bodies overlap, the weights are scaled to sum to 1.
+// With no static point and no other body (R_out infinite) s_b = 1
+// everywhere: the whole mesh moves with the body.
 // R_out <= R_in (a static boundary or another body inside the body's
 // circle) leaves no room for a twist: Error, naming the body.
 #pragma once

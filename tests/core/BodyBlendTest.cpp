@@ -120,3 +120,11 @@ TEST(BodyBlend, RefusesAWallInsideTheBodysCircle)
     std::vector<int> noBody(ch.bodyOf.size(), -1);
     EXPECT_THROW(BodyBlend(ch.boundary, noBody, {Eigen::Vector3d::Zero()}), Error);
 }
+
+
+TEST(BodyBlend, NothingStaticMovesEverythingWithTheBody)
+{
+    const Points body = ring(12, 0.5);
+    const BodyBlend blend(body, std::vector<int>(12, 0), {Eigen::Vector3d(0.1, 0, 0)});
+    EXPECT_EQ(blend.weights(ring(30, 7.0)).minCoeff(), 1.0);
+}

@@ -71,6 +71,16 @@ std::vector<badInput> catalogue()
         {"SwapRuleWithGreedy", mv + st + r + "controlPoints { selection greedy; swapRule nearest; }", "swapRule"},
         {"BlendStepsWithNearest", mv + st + r + "controlPoints { selection dynamic; swapRule nearest; swapBlendSteps 3; }", "swapBlendSteps"},
         {"ZeroBlendSteps", mv + st + r + "controlPoints { selection dynamic; swapBlendSteps 0; }", "swapBlendSteps"},
+        {"RotationWithoutRotationInterpolation", mv + st + r + "rotation { centre (0.5 0 0); }", "rotationInterpolation"},
+        {"RotationInterpolationNotBool", mv + st + r + "rotationInterpolation maybe;", "rotationInterpolation"},
+        {"RotationNotDict", mv + st + r + "rotationInterpolation true; rotation yes;", "rotation"},
+        {"RotationUnknownKeyword", mv + st + r + "rotationInterpolation true; rotation { center (0.5 0 0); }", "center"},
+        {"RotationBodiesNotDict", mv + st + r + "rotationInterpolation true; rotation { bodies (bottom); }", "bodies"},
+        {"RotationCentreBesideBodies", mv + st + r + "rotationInterpolation true; rotation { centre (0 0 0); bodies { b { patches (bottom); } } }", "centre"},
+        {"RotationBodyOfStaticPatch", mv + st + r + "rotationInterpolation true; rotation { bodies { b { patches (top); } } }", "movingPatches"},
+        {"RotationBodyUnknownPatch", mv + st + r + "rotationInterpolation true; rotation { bodies { b { patches (wing); } } }", "patches"},
+        {"RotationBodyUnknownKeyword", mv + st + r + "rotationInterpolation true; rotation { bodies { b { patches (bottom); pivot (0 0 0); } } }", "pivot"},
+        {"RotationNoRoomAroundTheCentre", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0.9 0); }", "no room"},
         {"MovingPatchRegexMatchesNothing", "movingPatches (\"wing.*\");" + st + r, "movingPatches"},
     };
 }

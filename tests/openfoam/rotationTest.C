@@ -1,0 +1,149 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF tests: rotationInterpolation
+-------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
+-------------------------------------------------------------------------------
+Description
+    rotationInterpolation: a rigid motion of every patch together (no static
+    patch) moves every point rigidly, in every selection mode, past half a
+    turn; a rotating body turns the points within its circle rigidly and
+    leaves the points beyond the blend in place, in one step of 150 degrees.
+
+\*---------------------------------------------------------------------------*/
+
+#include "testHelpers.H"
+#include "unitConversion.H"
+
+#include <gtest/gtest.h>
+
+using namespace Foam;
+using namespace Foam::dcpRBFTest;
+
+namespace
+{
+
+//- x -> c + R(x - c) + t, R a rotation by angle about axis
+struct rigidMap
+{
+    tensor R;
+    point c;
+    vector t;
+    vector operator()(const point& x) const { return c + (R & (x - c)) + t - x; }
+};
+
+rigidMap makeMap(const vector& axis, const scalar deg, const point& c, const vector& t)
+{
+    const vector n(axis/mag(axis));
+    const scalar a = degToRad(deg);
+    const tensor K(0, -n.z(), n.y(), n.z(), 0, -n.x(), -n.y(), n.x(), 0);
+    return {I + Foam::sin(a)*K + (1 - Foam::cos(a))*(K & K), c, t};
+}
+
+class RigidEverything
+:
+    public ::testing::TestWithParam<std::tuple<label, std::string>>
+{};
+
+TEST_P(RigidEverything, EveryPointMovesRigidlyPastHalfATurn)
+{
+    const label dim = std::get<0>(GetParam());
+    const std::string selection = std::get<1>(GetParam());
+    const word patches(dim == 2 ? "(left right bottom top)" : "(\".*\")");
+    testCase c
+    (
+        dim, 5,
+        "movingPatches " + patches + "; staticPatches (); function WendlandC2;"
+        " supportRadius 0.7; polynomial true; rotationInterpolation true;"
+        " controlPoints { selection " + selection + "; }"
+    );
+    autoPtr<motionSolver> ms(select(c));
+    auto& solver = refCast<dcpRBFMotionSolver>(ms());
+    const vector axis(dim == 2 ? vector(0, 0, 1) : vector(1, 2, -0.5));
+    const pointField p0(solver.points0());
+
+    // three steps, the last past half a turn
+    for (const scalar deg : {60.0, 120.0, 200.0})
+    {
+        c.runTime()++;
+        const rigidMap f(makeMap(axis, deg, point(0.3, 0.6, 0), vector(0.2, -0.1, 0)));
+        for (const polyPatch& pp : c.mesh().boundaryMesh())
+        {
+            if (pp.type() != "empty") prescribe(solver.pointDisplacement(), pp.name(), f);
+        }
+        const pointField p(ms->newPoints());
+        scalar err = 0;
+        forAll(p, i)
+        {
+            vector expected(p0[i] + f(p0[i]));
+            if (dim == 2) expected.z() = p0[i].z();
+            err = max(err, mag(p[i] - expected));
+        }
+        EXPECT_LT(err, 1e-10) << dim << "D " << selection << " at " << deg << " deg";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P
+(
+    DimAndSelection,
+    RigidEverything,
+    ::testing::Combine
+    (
+        ::testing::Values(label(2), label(3)),
+        ::testing::Values("all", "greedy", "dynamic")
+    ),
+    [](const auto& info)
+    {
+        return std::to_string(std::get<0>(info.param)) + "D_"
+            + std::get<1>(info.param);
+    }
+);
+
+
+TEST(RotatingBody, InnerCircleTurnsRigidlyOuterPointsStay)
+{
+    // bottom (y = 0, x in [0, 1]) turns 150 deg about its middle: its circle
+    // has radius 0.5; the nearest static point (left/right, first cell
+    // up) is at sqrt(0.25 + 0.1^2): the blend ends there
+    testCase c
+    (
+        2, 10,
+        "movingPatches (bottom); staticPatches (left right top);"
+        " function WendlandC2; supportRadius 2; polynomial true;"
+        " controlPoints { selection greedy; } rotationInterpolation true;"
+        " rotation { centre (0.5 0 0); }"
+    );
+    autoPtr<motionSolver> ms(select(c));
+    auto& solver = refCast<dcpRBFMotionSolver>(ms());
+    const point centre(0.5, 0, 0);
+    const rigidMap f(makeMap(vector(0, 0, 1), 150, centre, Zero));
+    c.runTime()++;
+    prescribe(solver.pointDisplacement(), "bottom", f);
+    const pointField p0(solver.points0());
+    const pointField p(ms->newPoints());
+
+    const scalar outer = Foam::sqrt(0.25 + 0.01);
+    label nInside = 0, nOutside = 0;
+    forAll(p, i)
+    {
+        vector r0(p0[i] - centre);
+        r0.z() = 0;
+        if (mag(r0) < 0.5 - 1e-9)
+        {
+            vector expected(p0[i] + f(p0[i]));
+            expected.z() = p0[i].z();
+            EXPECT_LT(mag(p[i] - expected), 1e-12) << "point " << i;
+            ++nInside;
+        }
+        else if (mag(r0) > outer + 1e-9)
+        {
+            EXPECT_LT(mag(p[i] - p0[i]), 1e-12) << "point " << i;
+            ++nOutside;
+        }
+    }
+    EXPECT_GT(nInside, 50);
+    EXPECT_GT(nOutside, 100);
+}
+
+} // namespace
