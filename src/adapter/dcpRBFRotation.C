@@ -9,10 +9,21 @@ License
 #include "dcpRBFRotation.H"
 #include "dcpRBFDictReader.H"
 #include "syncTools.H"
+#include "pointFields.H"
 #include "Time.H"
 #include "unitConversion.H"
 
 #include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::dcpRBFRotation::blendProfile>
+Foam::dcpRBFRotation::blendProfileNames
+({
+    {blendProfile::log, "log"},
+    {blendProfile::cellSize, "cellSize"}
+});
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -139,6 +150,67 @@ void Foam::dcpRBFRotation::readBodies
 }
 
 
+std::vector<double> Foam::dcpRBFRotation::cellExtents
+(
+    const polyMesh& mesh,
+    const Eigen::Vector3d& centre,
+    const scalar inner,
+    const scalar outer
+) const
+{
+    scalarList h(nProfileBins_, scalar(0));
+    const scalar dr = (outer - inner)/nProfileBins_;
+    const labelListList& cellPoints = mesh.cellPoints();
+    forAll(cellPoints, celli)
+    {
+        scalar rMin = GREAT, rMax = -GREAT;
+        for (const label pointi : cellPoints[celli])
+        {
+            const scalar r = (evalPoints_.row(pointi).transpose() - centre).norm();
+            rMin = min(rMin, r);
+            rMax = max(rMax, r);
+        }
+        if (rMax <= inner || rMin >= outer)
+        {
+            continue;
+        }
+        const label k0 = max(label(0), label((rMin - inner)/dr));
+        const label k1 = min(nProfileBins_ - 1, label((rMax - inner)/dr));
+        for (label k = k0; k <= k1; ++k)
+        {
+            h[k] = max(h[k], rMax - rMin);
+        }
+    }
+    Pstream::listCombineGather(h, maxEqOp<scalar>());
+    Pstream::listCombineScatter(h);
+    return std::vector<double>(h.begin(), h.end());
+}
+
+
+void Foam::dcpRBFRotation::writeBlend(const polyMesh& mesh) const
+{
+    pointScalarField blend
+    (
+        IOobject
+        (
+            "rotationBlend",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        pointMesh::New(mesh),
+        dimensionedScalar(dimless, Zero)
+    );
+    forAll(blend, pointi)
+    {
+        blend[pointi] = min(scalar(1), weights_.row(pointi).sum());
+    }
+    blend.write();
+}
+
+
 void Foam::dcpRBFRotation::readState()
 {
     motions_.assign(bodyNames_.size(), dcprbf::RigidMotion());
@@ -199,8 +271,9 @@ Foam::dcpRBFRotation::dcpRBFRotation
     const dictionary& dict =
         coeffs.found("rotation") ? coeffs.subDict("rotation") : dictionary::null;
     const dcpRBFDictReader r(dict);
-    r.checkKeywords({"bodies", "centre"});
+    r.checkKeywords({"bodies", "centre", "blendProfile"});
     readBodies(mesh, dict, settings);
+    profile_ = r.getEnum("blendProfile", blendProfileNames, blendProfile::cellSize);
 
     state_.reset
     (
@@ -221,14 +294,37 @@ Foam::dcpRBFRotation::dcpRBFRotation
 
     try
     {
-        const dcprbf::BodyBlend blend(boundary_.points(), bodyOf_, centres_);
+        dcprbf::BodyBlend blend(boundary_.points(), bodyOf_, centres_);
+        if (profile_ == blendProfile::cellSize)
+        {
+            forAll(bodyNames_, b)
+            {
+                if (std::isfinite(blend.outerRadius(b)))
+                {
+                    blend.setDensity
+                    (
+                        b,
+                        dcprbf::BodyBlend::cellAdaptedDensity
+                        (
+                            cellExtents
+                            (
+                                mesh, centres_[b], blend.innerRadius(b),
+                                blend.outerRadius(b)
+                            )
+                        )
+                    );
+                }
+            }
+        }
         weights_ = blend.weights(evalPoints_);
+        writeBlend(mesh);
         Info<< "dcpRBF: rotationInterpolation, " << bodyNames_.size()
             << " bodies" << nl;
         forAll(bodyNames_, b)
         {
             Info<< "    " << bodyNames_[b] << ": " << bodyPoints_[b].size()
-                << " boundary points, centre "
+                << " boundary points, blendProfile "
+                << blendProfileNames[profile_] << ", centre "
                 << projection_.pointFromCore(centres_[b].data())
                 << ", turns rigidly within " << blend.innerRadius(b)
                 << ", blend ends at " << blend.outerRadius(b) << nl;

@@ -50,6 +50,19 @@ public:
     //- Weights at points x (x.rows() x bodies), threaded per point
     Eigen::MatrixXd weights(const Points& x) const;
 
+    //- Replace body b's log profile: -ds/dr proportional to density[k] on
+    //  the k-th of density.size() equal bins of [R_in, R_out] (s = 1 at
+    //  R_in, 0 at R_out). Throws Error for an empty or non-positive density
+    void setDensity(int body, const std::vector<double>& density);
+
+    //- The density that spreads the twist by the mesh: with h_k the
+    //  largest radial extent of the cells in bin k (cellExtent), the
+    //  density 1/h_k gives every cell of the largest size at its radius the
+    //  same share of the angle (the first to fold are the largest cells:
+    //  their corners turn by the most different angles). Bins without a
+    //  cell take their neighbours' extent.
+    static std::vector<double> cellAdaptedDensity(const std::vector<double>& cellExtent);
+
     //- Per body: the radius turning rigidly (R_in) and where the weight
     //  reaches 0 (R_out)
     double innerRadius(int body) const { return inner_[body]; }
@@ -60,6 +73,11 @@ private:
     std::vector<Eigen::Vector3d> centres_;
     std::vector<double> inner_;
     std::vector<double> outer_;
+    //- Per body: 1 - s at the bin edges of [R_in, R_out] (empty: log)
+    std::vector<std::vector<double>> cumulative_;
+
+    //- s_b at distance r from the centre
+    double profile(int b, double r) const;
 };
 
 } // namespace dcprbf
