@@ -20,6 +20,7 @@ License
 const Foam::Enum<Foam::dcpRBFRotation::blendProfile>
 Foam::dcpRBFRotation::blendProfileNames
 ({
+    {blendProfile::star, "star"},
     {blendProfile::log, "log"},
     {blendProfile::cellSize, "cellSize"}
 });
@@ -271,9 +272,24 @@ Foam::dcpRBFRotation::dcpRBFRotation
     const dictionary& dict =
         coeffs.found("rotation") ? coeffs.subDict("rotation") : dictionary::null;
     const dcpRBFDictReader r(dict);
-    r.checkKeywords({"bodies", "centre", "blendProfile"});
+    r.checkKeywords({"bodies", "centre", "blendProfile", "blendSlope", "blendRamp"});
     readBodies(mesh, dict, settings);
-    profile_ = r.getEnum("blendProfile", blendProfileNames, blendProfile::cellSize);
+    profile_ = r.getEnum("blendProfile", blendProfileNames, blendProfile::star);
+    slope_ = r.getScalar("blendSlope", 0.25, -SMALL, 10);
+    ramp_ = r.getScalar("blendRamp", 0.1, -SMALL, 1);
+    if (profile_ != blendProfile::star)
+    {
+        for (const word k : {"blendSlope", "blendRamp"})
+        {
+            if (dict.found(k))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Keyword " << k << " has no effect with blendProfile "
+                    << blendProfileNames[profile_] << ". It belongs to"
+                    << " blendProfile star" << exit(FatalIOError);
+            }
+        }
+    }
 
     state_.reset
     (
@@ -295,7 +311,14 @@ Foam::dcpRBFRotation::dcpRBFRotation
     try
     {
         dcprbf::BodyBlend blend(boundary_.points(), bodyOf_, centres_);
-        if (profile_ == blendProfile::cellSize)
+        if (profile_ == blendProfile::star)
+        {
+            forAll(bodyNames_, b)
+            {
+                blend.setStar(b, slope_, ramp_);
+            }
+        }
+        else if (profile_ == blendProfile::cellSize)
         {
             forAll(bodyNames_, b)
             {
@@ -396,7 +419,7 @@ void Foam::dcpRBFRotation::report(Ostream& os) const
             << " deg";
         if (dim_ == 3 && angle > 0)
         {
-            const Eigen::Vector3d a(m.rotation/angle);
+            const Eigen::Vector3d a(m.rotation/angle + Eigen::Vector3d::Zero());  // no -0
             os  << " about (" << a.x() << ' ' << a.y() << ' ' << a.z() << ')';
         }
         os  << ", translation (" << m.translation.x() << ' '

@@ -25,8 +25,9 @@
 // circle) leaves no room for a twist: Error, naming the body.
 #pragma once
 
-#include "Types.hpp"
+#include "StarEnvelope.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace dcprbf
@@ -38,8 +39,9 @@ public:
 
     //- boundary: the boundary points (n x 3); bodyOf: per point its body
     //  (0 .. centres.size() - 1) or -1 (static); centres: per body the
-    //  centre of its rotation. Throws Error for inconsistent sizes, a body
-    //  without points, or no room between a body and the static boundary.
+    //  centre of its rotation. Throws Error for inconsistent sizes or a body
+    //  without points; weights() throws for no room between a body and the
+    //  static boundary.
     BodyBlend
     (
         const Points& boundary,
@@ -63,6 +65,14 @@ public:
     //  cell take their neighbours' extent.
     static std::vector<double> cellAdaptedDensity(const std::vector<double>& cellExtent);
 
+    //- Replace body b's profile by the star-shaped ring (StarEnvelope with
+    //  slope kappa): s = 1 - F(t), t = ln(r / R_in(u)) / ln(R_out(u) /
+    //  R_in(u)) in [0, 1], u the direction from the centre; F(t) = t but
+    //  for the last `ramp` of [0, 1] next to the body, where the slope
+    //  falls smoothly to 0 (a C1 start of the twist). Points where R_out(u)
+    //  <= R_in(u) make weights() throw Error
+    void setStar(int body, double kappa, double ramp);
+
     //- Per body: the radius turning rigidly (R_in) and where the weight
     //  reaches 0 (R_out)
     double innerRadius(int body) const { return inner_[body]; }
@@ -76,8 +86,22 @@ private:
     //- Per body: 1 - s at the bin edges of [R_in, R_out] (empty: log)
     std::vector<std::vector<double>> cumulative_;
 
-    //- s_b at distance r from the centre
-    double profile(int b, double r) const;
+    //- Per body: the star-shaped ring (null: radial) and its ramp
+    std::vector<std::shared_ptr<const StarEnvelope>> stars_;
+    std::vector<double> ramps_;
+
+    //- The boundary points and their bodies (for setStar)
+    Points boundary_;
+    std::vector<int> bodyOf_;
+
+    //- s_b at point x
+    double profile(int b, const Eigen::Vector3d& x) const;
+
+    //- Error unless R_out > R_in (radial profiles)
+    void checkRadialRoom(int b) const;
+
+    //- The star profile's F(t) (t in [0, 1])
+    static double ramped(double t, double ramp);
 };
 
 } // namespace dcprbf

@@ -115,7 +115,8 @@ TEST(BodyBlend, RefusesAWallInsideTheBodysCircle)
 {
     Channel ch;
     ch.boundary.row(ch.boundary.rows() - 1) << 0.3, 0.3, 0;   // wall point at r 0.42 < 0.5
-    EXPECT_THROW(BodyBlend(ch.boundary, ch.bodyOf, {Eigen::Vector3d::Zero()}), Error);
+    const BodyBlend tight(ch.boundary, ch.bodyOf, {Eigen::Vector3d::Zero()});
+    EXPECT_THROW(tight.weights(ch.boundary), Error);
     EXPECT_THROW(BodyBlend(ch.boundary, std::vector<int>(3, 0), {Eigen::Vector3d::Zero()}), Error);
     std::vector<int> noBody(ch.bodyOf.size(), -1);
     EXPECT_THROW(BodyBlend(ch.boundary, noBody, {Eigen::Vector3d::Zero()}), Error);
@@ -127,4 +128,50 @@ TEST(BodyBlend, NothingStaticMovesEverythingWithTheBody)
     const Points body = ring(12, 0.5);
     const BodyBlend blend(body, std::vector<int>(12, 0), {Eigen::Vector3d(0.1, 0, 0)});
     EXPECT_EQ(blend.weights(ring(30, 7.0)).minCoeff(), 1.0);
+}
+
+
+TEST(BodyBlend, StarRingFollowsAThinBodyAndFarWalls)
+{
+    // the ellipse (0.5 x 0.1) in the square |x|, |y| = 2: with kappa 0 the
+    // star ring is the radial one; with kappa > 0 the twist starts closer to
+    // the body across its thin side, and s is 1 on the body, 0 on the walls
+    const Channel ch;
+    BodyBlend radial(ch.boundary, ch.bodyOf, {Eigen::Vector3d::Zero()});
+    BodyBlend star0(ch.boundary, ch.bodyOf, {Eigen::Vector3d::Zero()});
+    star0.setStar(0, 0.0, 0.0);
+    const Points probe = ring(72, 1.3);
+    EXPECT_LT((radial.weights(probe) - star0.weights(probe)).cwiseAbs().maxCoeff(), 1e-14);
+
+    BodyBlend star(ch.boundary, ch.bodyOf, {Eigen::Vector3d::Zero()});
+    star.setStar(0, 0.25, 0.1);
+    const Eigen::MatrixXd w = star.weights(ch.boundary);
+    for (Eigen::Index i = 0; i < ch.boundary.rows(); ++i)
+    {
+        EXPECT_EQ(w(i, 0), ch.bodyOf[i] == 0 ? 1.0 : 0.0) << i;
+    }
+    Points above(1, 3);
+    above << 0, 0.4, 0;     // inside the radial ring's rigid disc (r < 0.5)
+    EXPECT_EQ(radial.weights(above)(0, 0), 1.0);
+    EXPECT_LT(star.weights(above)(0, 0), 1.0);
+}
+
+
+TEST(BodyBlend, StarAngularSlopeIsBounded)
+{
+    // |ds/dphi| <= kappa / ln(R_out/R_in) <= kappa / ln(R_out,min/R_in,max)
+    // on a circle between body and walls (finite differences, no ramp)
+    const Channel ch;
+    BodyBlend star(ch.boundary, ch.bodyOf, {Eigen::Vector3d::Zero()});
+    const double kappa = 0.25;
+    star.setStar(0, kappa, 0.0);
+    const int n = 3600;
+    const Eigen::MatrixXd w = star.weights(ring(n, 1.0));
+    double slope = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        slope = std::max(slope, std::abs(w((i + 1) % n, 0) - w(i, 0))/(2*double(EIGEN_PI)/n));
+    }
+    EXPECT_GT(slope, 0);
+    EXPECT_LE(slope, kappa/std::log(2/0.5)*1.001);
 }

@@ -33,21 +33,28 @@ test_rotation2D_airfoil_pitch150deg_validWhereDisplacementFolds() {
     meshOkAtEveryTime
 }
 
-# 3D: the hollow cube rotated 120 deg about (1 1 1)
-test_rotation3D_hollowCube_rotate120deg_validWhereDisplacementFolds() {
-    write_hollowCube . 6
-    run blockMesh || return 1
-    hollowCubeRotation 2.0944
+# 3D: the airfoil mesh with symmetry sides instead of empty ones: the
+# motion is solved in 3D (3D fit, star-shaped ring on the sphere), pitched
+# 120 deg; displacement interpolation folds cells, rotationInterpolation not
+test_rotation3D_airfoilSlab_pitch120deg_validWhereDisplacementFolds() {
+    write_motionControls .
+    airfoilMesh 0.04 1.0 || return 1
+    foamDictionary constant/polyMesh/boundary -entry entry0/frontAndBack/type -set symmetry > /dev/null
+    pitchingPointDisplacement wing "(0 0 -1)" "(0.25 0 0)" 2.0944 \
+        "(inlet|outlet|topAndBottom)" "frontAndBack { type symmetry; }"
     mkdir -p displacement
     cp -r constant system 0 displacement/
     (
         cd displacement || exit 1
-        dynamicMeshDict "movingPatches (body); staticPatches (outer); supportRadius 3;"
+        dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5;"
         run moveDynamicMesh || exit 1
         ! lastTimeMeshOk
     ) || fail "displacement interpolation gave a valid mesh at 120 deg: the test case is too easy" || return 1
-    dynamicMeshDict "movingPatches (body); staticPatches (outer); supportRadius 3; rotationInterpolation true; rotation { centre (0 0 0); }"
+    dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5; rotationInterpolation true; rotation { centre (0.25 0 0.05); }"
     run moveDynamicMesh || return 1
+    grep -q "3D, selection" log.moveDynamicMesh || fail "not solved in 3D" || return 1
+    grep -q "rotation 120.000.* about (0 0 -1)" log.moveDynamicMesh \
+        || fail "no rotation of 120 deg about -z in the log" || return 1
     meshOkAtEveryTime
 }
 
