@@ -81,6 +81,10 @@ std::vector<badInput> catalogue()
         {"RotationBodyUnknownPatch", mv + st + r + "rotationInterpolation true; rotation { bodies { b { patches (wing); } } }", "patches"},
         {"RotationBodyUnknownKeyword", mv + st + r + "rotationInterpolation true; rotation { bodies { b { patches (bottom); pivot (0 0 0); } } }", "pivot"},
         {"RotationNoRoomAroundTheCentre", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0.9 0); }", "no room"},
+        {"UnknownBlendProfile", mv + st + r + "rotationInterpolation true; rotation { blendProfile spiral; }", "blendProfile"},
+        {"BlendSlopeWithLogProfile", mv + st + r + "rotationInterpolation true; rotation { blendProfile log; blendSlope 0.1; }", "blendSlope"},
+        {"NegativeBlendSlope", mv + st + r + "rotationInterpolation true; rotation { blendSlope -1; }", "blendSlope"},
+        {"BlendRampAboveOne", mv + st + r + "rotationInterpolation true; rotation { blendRamp 2; }", "blendRamp"},
         {"MovingPatchRegexMatchesNothing", "movingPatches (\"wing.*\");" + st + r, "movingPatches"},
     };
 }

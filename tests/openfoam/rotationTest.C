@@ -101,18 +101,19 @@ INSTANTIATE_TEST_SUITE_P
 );
 
 
-TEST(RotatingBody, InnerCircleTurnsRigidlyOuterPointsStay)
+TEST(RotatingBody, RadialRingInnerCircleTurnsRigidlyOuterPointsStay)
 {
-    // bottom (y = 0, x in [0, 1]) turns 150 deg about its middle: its circle
-    // has radius 0.5; the nearest static point (left/right, first cell
-    // up) is at sqrt(0.25 + 0.1^2): the blend ends there
+    // bottom (y = 0, x in [0, 1]) turns 150 deg about its middle; the
+    // radial ring (blendProfile log): the body's circle has radius 0.5, the
+    // nearest static point (left/right, first cell up) is at
+    // sqrt(0.25 + 0.1^2): the blend ends there
     testCase c
     (
         2, 10,
         "movingPatches (bottom); staticPatches (left right top);"
         " function WendlandC2; supportRadius 2; polynomial true;"
         " controlPoints { selection greedy; } rotationInterpolation true;"
-        " rotation { centre (0.5 0 0); }"
+        " rotation { centre (0.5 0 0); blendProfile log; }"
     );
     autoPtr<motionSolver> ms(select(c));
     auto& solver = refCast<dcpRBFMotionSolver>(ms());
