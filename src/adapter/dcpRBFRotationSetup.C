@@ -15,6 +15,7 @@ Description
 #include "syncTools.H"
 #include "pointFields.H"
 #include "Time.H"
+#include "clockTime.H"
 
 #include <cmath>
 
@@ -210,14 +211,19 @@ void Foam::dcpRBFRotation::computeWeights
     const dictionary& dict
 )
 {
+    clockTime timer;
     try
     {
         dcprbf::BodyBlend blend(boundary_.points(), bodyOf_, centres_);
         if (profile_ == blendProfile::star)
         {
+            // 3D with many boundary points: radii from a 2-degree grid of
+            // directions (decided on the global set: the same on every
+            // processor); else exact at every point
+            const int grid = (dim_ == 3 && boundary_.size() > 5000) ? 90 : 0;
             forAll(bodyNames_, b)
             {
-                blend.setStar(b, slope_, ramp_);
+                blend.setStar(b, slope_, ramp_, grid);
             }
         }
         else if (profile_ == blendProfile::cellSize)
@@ -244,7 +250,8 @@ void Foam::dcpRBFRotation::computeWeights
         weights_ = blend.weights(evalPoints_);
         writeBlend(mesh);
         Info<< "dcpRBF: rotationInterpolation, " << bodyNames_.size()
-            << " bodies" << nl;
+            << " bodies, blend computed in " << timer.elapsedTime() << " s"
+            << nl;
         forAll(bodyNames_, b)
         {
             Info<< "    " << bodyNames_[b] << ": " << bodyPoints_[b].size()

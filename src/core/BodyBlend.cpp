@@ -133,7 +133,7 @@ double BodyBlend::profile(int b, const Eigen::Vector3d& x) const
 }
 
 
-void BodyBlend::setStar(int body, double kappa, double ramp)
+void BodyBlend::setStar(int body, double kappa, double ramp, int gridPolar)
 {
     if (body < 0 || body >= int(centres_.size()))
     {
@@ -152,7 +152,12 @@ void BodyBlend::setStar(int body, double kappa, double ramp)
         if (bodyOf_[k] == body) own.row(i++) = boundary_.row(k);
         else others.row(j++) = boundary_.row(k);
     }
-    stars_[body] = std::make_shared<StarEnvelope>(centres_[body], own, others, kappa);
+    auto star = std::make_shared<StarEnvelope>(centres_[body], own, others, kappa);
+    if (gridPolar > 0)
+    {
+        star->buildGrid(gridPolar);
+    }
+    stars_[body] = star;
     ramps_[body] = ramp;
 }
 

@@ -70,8 +70,9 @@ public:
     //  R_in(u)) in [0, 1], u the direction from the centre; F(t) = t but
     //  for the last `ramp` of [0, 1] next to the body, where the slope
     //  falls smoothly to 0 (a C1 start of the twist). Points where R_out(u)
-    //  <= R_in(u) make weights() throw Error
-    void setStar(int body, double kappa, double ramp);
+    //  <= R_in(u) make weights() throw Error. gridPolar > 0: the radii from
+    //  a direction grid (StarEnvelope::buildGrid), for large 3D meshes
+    void setStar(int body, double kappa, double ramp, int gridPolar = 0);
 
     //- Per body: the radius turning rigidly (R_in) and where the weight
     //  reaches 0 (R_out)

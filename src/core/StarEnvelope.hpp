@@ -18,7 +18,14 @@
 //
 // Exact: every point is compared with every boundary point, pruned by
 // sorting (the candidates that can still win); the cost is at most
-// n x (body + other points), once.
+// n x (body + other points), once. For large 3D meshes buildGrid() first
+// evaluates both radii exactly at the nodes of a latitude-longitude grid of
+// directions; a point then takes the tightest bounds its cell's four nodes
+// give through the slope: ln R_in(u) <= ln R_in(g) + kappa angle(u, g) and
+// ln R_out(u) >= ln R_out(g) - kappa angle(u, g) (both radii have slope
+// <= kappa), so the ring is never wider than the exact one (the body still
+// turns rigidly, the walls still stay) and narrower by at most
+// 2 kappa x the grid spacing in ln r.
 #pragma once
 
 #include "Types.hpp"
@@ -46,6 +53,13 @@ public:
     //  at the centre); lnOuter is +infinity without other points
     void radii(const Eigen::Vector3d& x, double& lnInner, double& lnOuter) const;
 
+    //- The exact radii (what radii() returns without a grid)
+    void exactRadii(const Eigen::Vector3d& u, double& lnInner, double& lnOuter) const;
+
+    //- Evaluate the radii at a grid of nPolar + 1 polar angles x
+    //  2 nPolar azimuths (threaded); radii() then bounds from it
+    void buildGrid(int nPolar);
+
 private:
 
     struct Ray
@@ -62,10 +76,18 @@ private:
         bool descending
     );
 
+    //- Unit direction of grid node (i polar, j azimuth)
+    Eigen::Vector3d node(int i, int j) const;
+
     Eigen::Vector3d centre_;
     double kappa_;
     std::vector<Ray> body_;
     std::vector<Ray> others_;
+
+    //- The grid (empty: exact): polar intervals, radii at the nodes
+    int nPolar_ = 0;
+    std::vector<double> gridInner_;
+    std::vector<double> gridOuter_;
 };
 
 } // namespace dcprbf

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace dcprbf;
 
@@ -174,4 +175,43 @@ TEST(BodyBlend, StarAngularSlopeIsBounded)
     }
     EXPECT_GT(slope, 0);
     EXPECT_LE(slope, kappa/std::log(2/0.5)*1.001);
+}
+
+
+TEST(StarEnvelope, GridBoundsNeverWidenTheRing)
+{
+    // a thin 3D body (a flat ellipse in z = 0) in a box: the grid's radii
+    // bound the exact ones from the safe side and stay within
+    // 2 kappa x spacing of them
+    Points body(200, 3), box(600, 3);
+    for (int i = 0; i < 200; ++i)
+    {
+        const double a = 2*double(EIGEN_PI)*i/200;
+        body.row(i) << 0.8*std::cos(a), 0.3*std::sin(a), 0.02*std::sin(3*a);
+    }
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> u(-2, 2);
+    for (int i = 0; i < 600; ++i)
+    {
+        Eigen::Vector3d p(u(gen), u(gen), u(gen));
+        p(i % 3) = (i % 2 ? 2.0 : -2.5);     // on a face of the box
+        box.row(i) = p.transpose();
+    }
+    const double kappa = 0.25;
+    StarEnvelope exact(Eigen::Vector3d::Zero(), body, box, kappa);
+    StarEnvelope grid(Eigen::Vector3d::Zero(), body, box, kappa);
+    const int nPolar = 45;
+    grid.buildGrid(nPolar);
+    const double tol = 2*kappa*double(EIGEN_PI)/nPolar*1.5;
+    for (int k = 0; k < 2000; ++k)
+    {
+        const Eigen::Vector3d x(u(gen), u(gen), u(gen));
+        double ei, eo, gi, go;
+        exact.exactRadii(x.normalized(), ei, eo);
+        grid.radii(x, gi, go);
+        ASSERT_GE(gi, ei - 1e-12) << k;
+        ASSERT_LE(go, eo + 1e-12) << k;
+        EXPECT_LT(gi - ei, tol) << k;
+        EXPECT_LT(eo - go, tol) << k;
+    }
 }
