@@ -107,13 +107,13 @@ everySelectionParallelEqualsSerial() {
     [ ${#failed[@]} -eq 0 ] || fail "${#failed[@]} of 6 runs failed: ${failed[*]}"
 }
 
-# the airfoil, its wing bent and stretched (non-rigid) through a
-# timeVaryingMappedFixedValue point condition
-test_parallelManual_airfoil2D_bendingWing_equalsSerial() {
+# bendingWingCase: the airfoil, its wing bent and stretched (non-rigid)
+# through a timeVaryingMappedFixedValue point condition, to t = 0.5, with a
+# manual decomposition cutting through the wing (chord 0..1) and topAndBottom
+bendingWingCase() {
     write_motionControls .
     airfoilMesh 0.04 1.0 || return 1
     foamDictionary system/controlDict -entry endTime -set 0.5 > /dev/null
-    # cut through the wing (chord 0..1) and through topAndBottom
     manualDecomposition 0.5 "wing" "inlet outlet topAndBottom" "moving static" \
         -v bendPatch=wing -v bend="0.3 0.25 0.2" -v dir=constant/boundaryData/wing || return 1
     writeFile 0/pointDisplacement pointVectorField <<'EOT'
@@ -126,6 +126,10 @@ boundaryField
     frontAndBack { type empty; }
 }
 EOT
+}
+
+test_parallelManual_airfoil2D_bendingWing_equalsSerial() {
+    bendingWingCase || return 1
     everySelectionParallelEqualsSerial 0.5 \
         "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5;"
 }

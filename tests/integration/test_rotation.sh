@@ -12,20 +12,26 @@ lastTimeMeshOk() {
     grep -q '^Mesh OK' log.checkMesh
 }
 
+# displacementFolds COEFFS: in displacement/, a copy of the case run with
+# dcpRBFCoeffs COEFFS (no rotationInterpolation) has an invalid last mesh
+displacementFolds() {
+    mkdir -p displacement
+    cp -r constant system 0 displacement/
+    (
+        cd displacement || exit 1
+        dynamicMeshDict "$1"
+        run moveDynamicMesh || exit 1
+        ! lastTimeMeshOk
+    ) || fail "displacement interpolation gave a valid mesh: the test case is too easy"
+}
+
 # 2D: the airfoil (channel +-5 chords) pitched 150 deg about its quarter
 # chord: displacement interpolation folds cells, rotationInterpolation not
 test_rotation2D_airfoil_pitch150deg_validWhereDisplacementFolds() {
     write_motionControls .
     airfoilMesh 0.04 1.0 || return 1
     airfoilPointDisplacement 2.618
-    mkdir -p displacement
-    cp -r constant system 0 displacement/
-    (
-        cd displacement || exit 1
-        dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5;"
-        run moveDynamicMesh || exit 1
-        ! lastTimeMeshOk
-    ) || fail "displacement interpolation gave a valid mesh at 150 deg: the test case is too easy" || return 1
+    displacementFolds "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5;" || return 1
     dynamicMeshDict "$rotationCoeffs2D"
     run moveDynamicMesh || return 1
     grep -q "body movingPatches: rotation -150.000" log.moveDynamicMesh \
@@ -42,14 +48,7 @@ test_rotation3D_airfoilSlab_pitch120deg_validWhereDisplacementFolds() {
     foamDictionary constant/polyMesh/boundary -entry entry0/frontAndBack/type -set symmetry > /dev/null
     pitchingPointDisplacement wing "(0 0 -1)" "(0.25 0 0)" 2.0944 \
         "(inlet|outlet|topAndBottom)" "frontAndBack { type symmetry; }"
-    mkdir -p displacement
-    cp -r constant system 0 displacement/
-    (
-        cd displacement || exit 1
-        dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5;"
-        run moveDynamicMesh || exit 1
-        ! lastTimeMeshOk
-    ) || fail "displacement interpolation gave a valid mesh at 120 deg: the test case is too easy" || return 1
+    displacementFolds "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5;" || return 1
     dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5; rotationInterpolation true; rotation { centre (0.25 0 0.05); }"
     run moveDynamicMesh || return 1
     grep -q "3D, selection" log.moveDynamicMesh || fail "not solved in 3D" || return 1
@@ -62,21 +61,7 @@ test_rotation3D_airfoilSlab_pitch120deg_validWhereDisplacementFolds() {
 # on the manual decomposition through the wing: every selection, with and
 # without boundary correction, equals serial
 test_rotation2D_parallelManual_bendingWing_equalsSerial() {
-    write_motionControls .
-    airfoilMesh 0.04 1.0 || return 1
-    foamDictionary system/controlDict -entry endTime -set 0.5 > /dev/null
-    manualDecomposition 0.5 "wing" "inlet outlet topAndBottom" "moving static" \
-        -v bendPatch=wing -v bend="0.3 0.25 0.2" -v dir=constant/boundaryData/wing || return 1
-    writeFile 0/pointDisplacement pointVectorField <<'EOT'
-dimensions [0 1 0 0 0 0 0];
-internalField uniform (0 0 0);
-boundaryField
-{
-    wing { type timeVaryingMappedFixedValue; mapMethod nearest; value uniform (0 0 0); }
-    "(inlet|outlet|topAndBottom)" { type fixedValue; value uniform (0 0 0); }
-    frontAndBack { type empty; }
-}
-EOT
+    bendingWingCase || return 1
     everySelectionParallelEqualsSerial 0.5 "$rotationCoeffs2D"
 }
 
