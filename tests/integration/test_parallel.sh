@@ -49,7 +49,8 @@ test_hollowCube3D_parallelEqualsSerial() {
 
 # The result does not depend on the number of OpenMP threads (the core's
 # loops are per point, Eigen's own threading is off): 1 and 2 threads give the
-# same points, every selection mode, to round-off of the written digits
+# same points, every selection mode, to round-off of the written digits, and
+# the same cell-quality summary (nCells, minQuality, meanQuality) to the digit
 test_threads_sameResultOn1And2Threads() {
     local selection dir diff failed=()
     for selection in "selection all;" "selection greedy; tolerance 1e-3;" "selection dynamic; tolerance 1e-2;"
@@ -68,6 +69,11 @@ test_threads_sameResultOn1And2Threads() {
             || { failed+=("$dir: $diff"); continue; }
         echo "$dir: 1 vs 2 threads: $diff"
         awk -v r="$(echo "$diff" | cut -d' ' -f2)" 'BEGIN { exit !(r <= 1e-14) }' || failed+=("$dir differs: $diff")
+        # the quality scan: nCells, minQuality, meanQuality identical (17 digits)
+        local q1 q2
+        q1=$(grep -v '^#' "$dir/postProcessing/dcpRBF/0/dcpRBF.dat" | cut -d' ' -f6-8)
+        q2=$(grep -v '^#' "$dir/two/postProcessing/dcpRBF/0/dcpRBF.dat" | cut -d' ' -f6-8)
+        [ -n "$q1" ] && [ "$q1" = "$q2" ] || failed+=("$dir: quality differs: [$q1] vs [$q2]")
     done
     [ ${#failed[@]} -eq 0 ] || fail "$(printf '%s\n' "${failed[@]}")"
 }
