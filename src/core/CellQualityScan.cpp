@@ -1,5 +1,6 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 #include "CellQualityScan.hpp"
+#include "TetMeasures.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,62 +12,6 @@ namespace dcprbf
 
 namespace
 {
-
-inline void cross(const double* a, const double* b, double* c)
-{
-    c[0] = a[1]*b[2] - a[2]*b[1];
-    c[1] = a[2]*b[0] - a[0]*b[2];
-    c[2] = a[0]*b[1] - a[1]*b[0];
-}
-
-inline double dot(const double* a, const double* b)
-{
-    return a[0]*b[0] + a[1]*b[1] + a[2]*b[2];
-}
-
-inline void measures
-(
-    const double* r0, const double* r1, const double* r2, const double* r3,
-    const double* c0, const double* c1, const double* c2, const double* c3,
-    double& J,
-    double& a2
-)
-{
-    // Edge matrices (columns e_k, f_k: edges from vertex 0)
-    double e[3][3], f[3][3];
-    for (int d = 0; d < 3; ++d)
-    {
-        e[0][d] = r1[d] - r0[d]; e[1][d] = r2[d] - r0[d]; e[2][d] = r3[d] - r0[d];
-        f[0][d] = c1[d] - c0[d]; f[1][d] = c2[d] - c0[d]; f[2][d] = c3[d] - c0[d];
-    }
-    // E0^-1 = (rows e1 x e2, e2 x e0, e0 x e1)/det0
-    double adj[3][3];
-    cross(e[1], e[2], adj[0]);
-    cross(e[2], e[0], adj[1]);
-    cross(e[0], e[1], adj[2]);
-    const double det0 = dot(e[0], adj[0]);
-    const double scale2 = std::max({dot(e[0], e[0]), dot(e[1], e[1]), dot(e[2], e[2])});
-    if (!(det0*det0 > 1e-28*scale2*scale2*scale2))
-    {
-        J = a2 = -1;   // degenerate reference (TetQuality::compute: q = 1)
-        return;
-    }
-    double f12[3];
-    cross(f[1], f[2], f12);
-    J = dot(f[0], f12)/det0;
-    // |A|_F^2, A det0 = E adj: (E adj)_ij = sum_k f_k[i] adj_k[j]
-    a2 = 0;
-    for (int i = 0; i < 3; ++i)
-    {
-        for (int j = 0; j < 3; ++j)
-        {
-            const double v = f[0][i]*adj[0][j] + f[1][i]*adj[1][j] + f[2][i]*adj[2][j];
-            a2 += v*v;
-        }
-    }
-    a2 /= det0*det0;
-}
-
 
 //- Keys ranked in place of the quality: where q^6 neither underflows nor
 //  overflows (outside, the quality itself is compared)
@@ -160,69 +105,6 @@ CellQualityScan::CellQualityScan
 }
 
 
-void CellQualityScan::tetMeasures
-(
-    const double* r0, const double* r1, const double* r2, const double* r3,
-    const double* c0, const double* c1, const double* c2, const double* c3,
-    double& J,
-    double& a2
-)
-{
-    measures(r0, r1, r2, r3, c0, c1, c2, c3, J, a2);
-}
-
-
-double CellQualityScan::quality(const double J, const double a2, const TetQuality::Metric metric)
-{
-    if (a2 < 0)
-    {
-        return 1.0;
-    }
-    if (!(J > 0))
-    {
-        return J;
-    }
-    const double fSize = std::min(J, 1.0/J);
-    const double fShape = 3.0*std::cbrt(J*J)/a2;
-    switch (metric)
-    {
-        case TetQuality::Metric::size: return fSize;
-        case TetQuality::Metric::shape: return fShape;
-        default: return std::sqrt(fSize)*fShape;
-    }
-}
-
-
-double CellQualityScan::rankKey(const double J, const double a2, const TetQuality::Metric metric)
-{
-    // q^6 (sizeShape: min(J, 1/J)^3 729 J^4/a2^6), q^3 (shape), q (size)
-    switch (metric)
-    {
-        case TetQuality::Metric::size: return std::min(J, 1.0/J);
-        case TetQuality::Metric::shape: return 27.0*J*J/(a2*a2*a2);
-        default:
-        {
-            const double a6 = a2*a2*a2;
-            const double J4 = (J*J)*(J*J);
-            return 729.0*(J < 1 ? J4*(J*J*J) : J)/(a6*a6);
-        }
-    }
-}
-
-
-double CellQualityScan::tetQuality
-(
-    const double* r0, const double* r1, const double* r2, const double* r3,
-    const double* c0, const double* c1, const double* c2, const double* c3,
-    TetQuality::Metric metric
-)
-{
-    double J, a2;
-    tetMeasures(r0, r1, r2, r3, c0, c1, c2, c3, J, a2);
-    return quality(J, a2, metric);
-}
-
-
 double CellQualityScan::cellQuality
 (
     const std::size_t i,
@@ -271,8 +153,8 @@ double CellQualityScan::cellQuality
             const std::size_t b = std::size_t(facePoints_[j + 1 < j1 ? j + 1 : j0]);
             double J, a2;
             const double* p0 = points0_.data();
-            measures(cc0, fc0, p0 + 3*a, p0 + 3*b, cc, fc, p + 3*a, p + 3*b, J, a2);
-            const double key = (J > 0 && a2 > 0) ? rankKey(J, a2, metric_) : 0;
+            TetMeasures::measures(cc0, fc0, p0 + 3*a, p0 + 3*b, cc, fc, p + 3*a, p + 3*b, J, a2);
+            const double key = (J > 0 && a2 > 0) ? TetMeasures::rankKey(J, a2, metric_) : 0;
             if (key > keyFloor && key < keyCeiling)
             {
                 if (key < bestKey)
@@ -284,12 +166,12 @@ double CellQualityScan::cellQuality
             }
             else
             {
-                qOther = std::min(qOther, quality(J, a2, metric_));
+                qOther = std::min(qOther, TetMeasures::quality(J, a2, metric_));
             }
         }
     }
     return std::min(qOther, bestKey < std::numeric_limits<double>::max()
-        ? quality(bestJ, bestA2, metric_) : qOther);
+        ? TetMeasures::quality(bestJ, bestA2, metric_) : qOther);
 }
 
 

@@ -49,32 +49,6 @@ public:
     //  as the reference points) into q
     void measure(const double* p, double* q) const;
 
-    //- The metric of TetQuality::compute for the tetrahedron (r0 .. r3)
-    //  moved to (c0 .. c3), without temporaries (equal to round-off)
-    static double tetQuality
-    (
-        const double* r0, const double* r1, const double* r2, const double* r3,
-        const double* c0, const double* c1, const double* c2, const double* c3,
-        TetQuality::Metric metric
-    );
-
-    //- J and |A|_F^2 of the tetrahedron (TetQuality); a degenerate
-    //  reference gives a2 = -1
-    static void tetMeasures
-    (
-        const double* r0, const double* r1, const double* r2, const double* r3,
-        const double* c0, const double* c1, const double* c2, const double* c3,
-        double& J,
-        double& a2
-    );
-
-    //- The quality from J and |A|_F^2 (a2 < 0: degenerate reference, 1)
-    static double quality(double J, double a2, TetQuality::Metric metric);
-
-    //- For J > 0: q^6 (sizeShape), q^3 (shape), q (size): increasing in the
-    //  quality, without cbrt and sqrt
-    static double rankKey(double J, double a2, TetQuality::Metric metric);
-
 private:
     std::vector<std::size_t> cellStart_;
     std::vector<int> cellFaces_;

@@ -2,6 +2,7 @@
 // Unit tests of the flat cell-quality scan: the same values as the reference
 // TetQuality::compute on the same decomposition, whatever the thread count.
 #include "CellQualityScan.hpp"
+#include "TetMeasures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -131,7 +132,7 @@ TEST(CellQualityScan, TetQualityEqualsTheReferenceMetric)
                              TetQuality::Metric::shape})
         {
             const double ref = TetQuality::compute(r, c, m);
-            const double q = CellQualityScan::tetQuality
+            const double q = TetMeasures::tetQuality
             (
                 r[0].data(), r[1].data(), r[2].data(), r[3].data(),
                 c[0].data(), c[1].data(), c[2].data(), c[3].data(), m
@@ -148,7 +149,7 @@ TEST(CellQualityScan, DegenerateReferenceIsOne)
 {
     const double r[4][3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}};
     const double c[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    EXPECT_EQ(CellQualityScan::tetQuality(r[0], r[1], r[2], r[3], c[0], c[1], c[2], c[3],
+    EXPECT_EQ(TetMeasures::tetQuality(r[0], r[1], r[2], r[3], c[0], c[1], c[2], c[3],
                                           TetQuality::Metric::sizeShape), 1.0);
 }
 
@@ -237,11 +238,11 @@ TEST(CellQualityScan, KeyRanksAsTheQuality)
             // singular values)
             const double a1 = 3*std::cbrt(J1*J1)*std::exp(logA(gen));
             const double a2 = 3*std::cbrt(J2*J2)*std::exp(logA(gen));
-            const double q1 = CellQualityScan::quality(J1, a1, m);
-            const double q2 = CellQualityScan::quality(J2, a2, m);
+            const double q1 = TetMeasures::quality(J1, a1, m);
+            const double q2 = TetMeasures::quality(J2, a2, m);
             if (std::abs(q1 - q2) > 1e-12*std::max(q1, q2))
             {
-                EXPECT_EQ(q1 < q2, CellQualityScan::rankKey(J1, a1, m) < CellQualityScan::rankKey(J2, a2, m));
+                EXPECT_EQ(q1 < q2, TetMeasures::rankKey(J1, a1, m) < TetMeasures::rankKey(J2, a2, m));
             }
         }
     }
