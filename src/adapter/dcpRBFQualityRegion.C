@@ -12,15 +12,6 @@ License
 
 #include <algorithm>
 
-namespace
-{
-    //- A pointField as x y z per point (a vector is three contiguous scalars)
-    const Foam::scalar* xyz(const Foam::pointField& p)
-    {
-        static_assert(sizeof(Foam::vector) == 3*sizeof(Foam::scalar), "packed vector");
-        return reinterpret_cast<const Foam::scalar*>(p.cdata());
-    }
-}
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -36,7 +27,7 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
 {
     if (movingPoints.rows() == 0)
     {
-        buildScan(mesh, points0, metric);
+        quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
         return;
     }
     const dcprbf::PointTree tree(movingPoints);
@@ -62,46 +53,7 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     }
     cells_.transfer(cells);
     centres_.transfer(centres);
-    buildScan(mesh, points0, metric);
-}
-
-
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
-
-void Foam::dcpRBFQualityRegion::buildScan
-(
-    const polyMesh& mesh,
-    const pointField& points0,
-    const dcprbf::TetQuality::Metric metric
-)
-{
-    // The region's faces, each once, numbered in order of appearance
-    const faceList& faces = mesh.faces();
-    labelList compact(faces.size(), -1);
-    std::vector<std::size_t> cellStart(1, 0), faceStart(1, 0);
-    std::vector<int> cellFaces, facePoints;
-    for (const label celli : cells_)
-    {
-        for (const label facei : mesh.cells()[celli])
-        {
-            if (compact[facei] < 0)
-            {
-                compact[facei] = label(faceStart.size()) - 1;
-                facePoints.insert(facePoints.end(), faces[facei].begin(), faces[facei].end());
-                faceStart.push_back(facePoints.size());
-            }
-            cellFaces.push_back(compact[facei]);
-        }
-        cellStart.push_back(cellFaces.size());
-    }
-    scan_.reset
-    (
-        new dcprbf::CellQualityScan
-        (
-            std::move(cellStart), std::move(cellFaces), std::move(faceStart),
-            std::move(facePoints), xyz(points0), metric
-        )
-    );
+    quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
 }
 
 
@@ -115,12 +67,7 @@ Foam::label Foam::dcpRBFQualityRegion::size() const
 
 Foam::scalarField Foam::dcpRBFQualityRegion::quality(const pointField& p) const
 {
-    scalarField q(cells_.size());
-    if (q.size())
-    {
-        scan_->measure(xyz(p), q.data());
-    }
-    return q;
+    return quality_->compute(p);
 }
 
 
