@@ -74,6 +74,27 @@ CellQualityScan::CellQualityScan
         }
     }
     for (int& pi : facePoints_) pi = local[pi];
+
+    // Each cell's faces stored with the cell (a face shared by two cells
+    // twice): a measurement reads the topology in order
+    {
+        std::vector<std::size_t> entryStart(1, 0);
+        std::vector<int> entryPoints;
+        entryStart.reserve(cellFaces_.size() + 1);
+        for (int& f : cellFaces_)
+        {
+            entryPoints.insert
+            (
+                entryPoints.end(),
+                facePoints_.begin() + std::ptrdiff_t(faceStart_[f]),
+                facePoints_.begin() + std::ptrdiff_t(faceStart_[f + 1])
+            );
+            f = int(entryStart.size()) - 1;
+            entryStart.push_back(entryPoints.size());
+        }
+        faceStart_.swap(entryStart);
+        facePoints_.swap(entryPoints);
+    }
     points0_.resize(3*pointIds_.size());
     for (std::size_t i = 0; i < pointIds_.size(); ++i)
     {
@@ -108,8 +129,9 @@ CellQualityScan::CellQualityScan
 double CellQualityScan::cellQuality
 (
     const std::size_t i,
-    const double* p,
-    std::vector<double>& buf
+    const double* x,
+    std::vector<double>& buf,
+    std::vector<double>& pointBuf
 ) const
 {
     const std::size_t k0 = cellStart_[i], k1 = cellStart_[i + 1];
@@ -122,8 +144,8 @@ double CellQualityScan::cellQuality
         fc[0] = fc[1] = fc[2] = 0;
         for (std::size_t j = faceStart_[fi]; j < faceStart_[fi + 1]; ++j)
         {
-            const double* x = p + 3*std::size_t(facePoints_[j]);
-            fc[0] += x[0]; fc[1] += x[1]; fc[2] += x[2];
+            const double* y = x + 3*std::size_t(facePoints_[j]);
+            fc[0] += y[0]; fc[1] += y[1]; fc[2] += y[2];
         }
         const double n = double(faceStart_[fi + 1] - faceStart_[fi]);
         for (int d = 0; d < 3; ++d)
@@ -134,11 +156,15 @@ double CellQualityScan::cellQuality
     }
     for (int d = 0; d < 3; ++d) cc[d] /= double(k1 - k0);
 
+    // The tetrahedra of face k: (cc, fc, a_j, a_j+1). Per face point (its
+    // vertices' edges from the cell centre, the cross products with the
+    // face centre's edge) once, shared by the face's two tetrahedra at it.
     // The worst tetrahedron by a monotone function of its quality without
     // cbrt and sqrt (rankKey); its quality computed once. Inverted and
-    // degenerate ones and keys out of the key's range (underflow) compare
-    // by their quality.
+    // degenerate ones and keys out of the key's range compare by their
+    // quality.
     const double* cc0 = &cellCentres0_[3*i];
+    const double* x0 = points0_.data();
     double qOther = std::numeric_limits<double>::max();
     double bestKey = std::numeric_limits<double>::max(), bestJ = 1, bestA2 = 3;
     for (std::size_t k = k0; k < k1; ++k)
@@ -146,14 +172,57 @@ double CellQualityScan::cellQuality
         const int fi = cellFaces_[k];
         const double* fc0 = &faceCentres0_[3*k];
         const double* fc = &buf[3*(k - k0)];
-        const std::size_t j0 = faceStart_[fi], j1 = faceStart_[fi + 1];
-        for (std::size_t j = j0; j < j1; ++j)
+        const std::size_t j0 = faceStart_[fi], n = faceStart_[fi + 1] - j0;
+        double e0[3], f0[3];
+        for (int d = 0; d < 3; ++d)
         {
-            const std::size_t a = std::size_t(facePoints_[j]);
-            const std::size_t b = std::size_t(facePoints_[j + 1 < j1 ? j + 1 : j0]);
-            double J, a2;
-            const double* p0 = points0_.data();
-            TetMeasures::measures(cc0, fc0, p0 + 3*a, p0 + 3*b, cc, fc, p + 3*a, p + 3*b, J, a2);
+            e0[d] = fc0[d] - cc0[d];
+            f0[d] = fc[d] - cc[d];
+        }
+        const double s0 = TetMeasures::dot(e0, e0);
+
+        // per point: e (3), f (3), w = e0 x e (3), g = f0 x f (3), |e|^2
+        pointBuf.resize(13*n);
+        for (std::size_t j = 0; j < n; ++j)
+        {
+            double* r = &pointBuf[13*j];
+            const std::size_t pi = 3*std::size_t(facePoints_[j0 + j]);
+            for (int d = 0; d < 3; ++d)
+            {
+                r[d] = x0[pi + d] - cc0[d];
+                r[3 + d] = x[pi + d] - cc[d];
+            }
+            TetMeasures::cross(e0, r, r + 6);
+            TetMeasures::cross(f0, r + 3, r + 9);
+            r[12] = TetMeasures::dot(r, r);
+        }
+        for (std::size_t j = 0; j < n; ++j)
+        {
+            const double* ra = &pointBuf[13*j];
+            const double* rb = &pointBuf[13*(j + 1 < n ? j + 1 : 0)];
+            // E0 = (e0, ea, eb), E0^-1 det0 = rows (ea x eb, eb x e0, e0 x ea)
+            double adj0[3];
+            TetMeasures::cross(ra, rb, adj0);
+            const double adj1[3] = {-rb[6], -rb[7], -rb[8]};
+            const double* adj2 = ra + 6;
+            const double det0 = TetMeasures::dot(e0, adj0);
+            const double scale2 = std::max({s0, ra[12], rb[12]});
+            double J = -1, a2 = -1;
+            if (det0*det0 > 1e-28*scale2*scale2*scale2)
+            {
+                // E = (f0, fa, fb): det E = fb . (f0 x fa)
+                J = TetMeasures::dot(rb + 3, ra + 9)/det0;
+                a2 = 0;
+                for (int r = 0; r < 3; ++r)
+                {
+                    for (int c = 0; c < 3; ++c)
+                    {
+                        const double v = f0[r]*adj0[c] + ra[3 + r]*adj1[c] + rb[3 + r]*adj2[c];
+                        a2 += v*v;
+                    }
+                }
+                a2 /= det0*det0;
+            }
             const double key = (J > 0 && a2 > 0) ? TetMeasures::rankKey(J, a2, metric_) : 0;
             if (key > keyFloor && key < keyCeiling)
             {
@@ -190,11 +259,11 @@ void CellQualityScan::measure(const double* p, double* q) const
             x[3*i + 1] = y[1];
             x[3*i + 2] = y[2];
         }
-        std::vector<double> buf;
+        std::vector<double> buf, pointBuf;
         #pragma omp for schedule(static, 256)
         for (long i = 0; i < n; ++i)
         {
-            q[i] = cellQuality(std::size_t(i), x.data(), buf);
+            q[i] = cellQuality(std::size_t(i), x.data(), buf, pointBuf);
         }
     }
 }

@@ -8,9 +8,10 @@
 // average of its face centres; the cell's quality is the minimum over its
 // tetrahedra. The reference centres are computed once at construction
 // (from the reference points), the topology is stored flat (compressed
-// rows, the points renumbered in the order the cells use them), and a
-// measurement gathers the current points once into that order: no per-cell
-// allocation, no per-step work on the reference mesh.
+// rows, each cell's faces with the cell, the points renumbered in the order
+// the cells use them), and a measurement gathers the current points once
+// into that order and reads the topology in order: no per-cell allocation,
+// no per-step work on the reference mesh.
 //
 // Every cell's value depends only on its own points: a measurement with any
 // number of OpenMP threads gives bit-identical values.
@@ -68,8 +69,15 @@ private:
     std::vector<double> faceCentres0_;
     std::vector<double> cellCentres0_;
 
-    //- Quality of cell i for the compact current points x (buf: scratch)
-    double cellQuality(std::size_t i, const double* x, std::vector<double>& buf) const;
+    //- Quality of cell i for the compact current points x (buf,
+    //  pointBuf: scratch space)
+    double cellQuality
+    (
+        std::size_t i,
+        const double* x,
+        std::vector<double>& buf,
+        std::vector<double>& pointBuf
+    ) const;
 };
 
 } // namespace dcprbf
