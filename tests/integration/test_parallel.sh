@@ -77,3 +77,34 @@ test_threads_sameResultOn1And2Threads() {
     done
     [ ${#failed[@]} -eq 0 ] || fail "$(printf '%s\n' "${failed[@]}")"
 }
+
+# Default thread count (OMP_NUM_THREADS unset): a serial run uses the cores
+# it may run on (all of them; 1 under taskset -c 0), ranks share the node's
+# cores (bound or not: ranks x threads <= cores)
+test_threads_defaultNeverOversubscribes() {
+    local cores n
+    cores=$(nproc)
+    modeRun3D "selection greedy;" || return 1
+    foamDictionary system/controlDict -entry endTime -set 0.1 > /dev/null
+    threadsIn() { sed -n 's/^dcpRBF: \([0-9]*\) OpenMP thread(s).*/\1/p' "$1" | head -n 1; }
+    (unset OMP_NUM_THREADS; run moveDynamicMesh) || return 1
+    n=$(threadsIn log.moveDynamicMesh)
+    [ "$n" = "$cores" ] || fail "serial: $n threads, $cores cores available" || return 1
+    (unset OMP_NUM_THREADS; run taskset -c 0 moveDynamicMesh) || return 1
+    n=$(threadsIn log.taskset)
+    [ "$n" = 1 ] || fail "serial on one core (taskset -c 0): $n threads" || return 1
+    writeFile system/decomposeParDict dictionary <<EOT
+numberOfSubdomains 2;
+method simple; coeffs { n (2 1 1); }
+EOT
+    run decomposePar || return 1
+    (
+        unset OMP_NUM_THREADS
+        export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+        run mpirun --bind-to none -np 2 moveDynamicMesh -parallel
+    ) || return 1
+    n=$(threadsIn log.mpirun)
+    [ -n "$n" ] && [ $((2*n)) -le $((cores > 2 ? cores : 2)) ] \
+        || fail "2 unbound ranks on $cores cores: $n threads each" || return 1
+    echo "threads: serial $cores, taskset 1, 2 ranks $n each ($cores cores)"
+}
