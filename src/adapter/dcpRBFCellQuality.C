@@ -9,6 +9,16 @@ License
 #include "dcpRBFCellQuality.H"
 #include "TetQuality.hpp"
 
+namespace
+{
+    //- A pointField as x y z per point (a vector is three contiguous scalars)
+    const Foam::scalar* xyz(const Foam::pointField& p)
+    {
+        static_assert(sizeof(Foam::vector) == 3*sizeof(Foam::scalar), "packed vector");
+        return reinterpret_cast<const Foam::scalar*>(p.cdata());
+    }
+}
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dcpRBFCellQuality::dcpRBFCellQuality
@@ -20,6 +30,47 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
     mesh_(mesh),
     metric_(metric)
 {}
+
+
+Foam::dcpRBFCellQuality::dcpRBFCellQuality
+(
+    const polyMesh& mesh,
+    const labelUList& cells,
+    const pointField& points0,
+    dcprbf::TetQuality::Metric metric
+)
+:
+    mesh_(mesh),
+    metric_(metric)
+{
+    // The cells' faces, each once, numbered in order of appearance
+    const faceList& faces = mesh.faces();
+    labelList compact(faces.size(), -1);
+    std::vector<std::size_t> cellStart(1, 0), faceStart(1, 0);
+    std::vector<int> cellFaces, facePoints;
+    for (const label celli : cells)
+    {
+        for (const label facei : mesh.cells()[celli])
+        {
+            if (compact[facei] < 0)
+            {
+                compact[facei] = label(faceStart.size()) - 1;
+                facePoints.insert(facePoints.end(), faces[facei].begin(), faces[facei].end());
+                faceStart.push_back(facePoints.size());
+            }
+            cellFaces.push_back(compact[facei]);
+        }
+        cellStart.push_back(cellFaces.size());
+    }
+    scan_.reset
+    (
+        new dcprbf::CellQualityScan
+        (
+            std::move(cellStart), std::move(cellFaces), std::move(faceStart),
+            std::move(facePoints), xyz(points0), metric
+        )
+    );
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -104,6 +155,22 @@ Foam::scalarField Foam::dcpRBFCellQuality::compute
     for (label i = 0; i < cells.size(); ++i)
     {
         q[i] = cellQuality(cells[i], p0, p, fc0, fc);
+    }
+    return q;
+}
+
+
+Foam::scalarField Foam::dcpRBFCellQuality::compute(const pointField& p) const
+{
+    if (!scan_.valid())
+    {
+        FatalErrorInFunction
+            << "No cells given at construction" << abort(FatalError);
+    }
+    scalarField q(label(scan_->size()));
+    if (q.size())
+    {
+        scan_->measure(xyz(p), q.data());
     }
     return q;
 }

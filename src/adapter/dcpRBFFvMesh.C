@@ -59,10 +59,7 @@ const Foam::pointField& Foam::dcpRBFFvMesh::referencePoints() const
 
 void Foam::dcpRBFFvMesh::updateQuality()
 {
-    labelList all(nCells());
-    forAll(all, celli) all[celli] = celli;
-    cellQuality_.primitiveFieldRef() =
-        quality_.compute(all, referencePoints(), points());
+    cellQuality_.primitiveFieldRef() = quality_.compute(points());
     cellQuality_.correctBoundaryConditions();
 
     const scalarField& q = cellQuality_.primitiveField();
@@ -80,7 +77,7 @@ Foam::dcpRBFFvMesh::dcpRBFFvMesh(const IOobject& io)
 :
     dynamicMotionSolverFvMesh(io),
     initialPoints_(points()),
-    quality_(*this, readMetric(motion())),
+    quality_(*this, identity(nCells()), referencePoints(), readMetric(motion())),
     cellQuality_
     (
         IOobject

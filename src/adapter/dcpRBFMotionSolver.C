@@ -8,6 +8,7 @@ License
 
 #include "dcpRBFMotionSolver.H"
 #include "dcpRBFVersion.H"
+#include "dcpRBFThreads.H"
 #include "addToRunTimeSelectionTable.H"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
@@ -110,14 +111,12 @@ void Foam::dcpRBFMotionSolver::checkPatches() const
 
 void Foam::dcpRBFMotionSolver::setThreads() const
 {
-    #ifdef _OPENMP
     // MPI ranks x OpenMP threads beyond the cores slows everything down
-    // several times: one thread per rank unless the user says otherwise
-    if (Pstream::parRun() && getEnv("OMP_NUM_THREADS").empty())
-    {
-        omp_set_num_threads(1);
-    }
-    Info<< typeName << ": " << omp_get_max_threads() << " OpenMP thread(s)"
+    // several times: the cores available to the rank, shared among the
+    // node's ranks, unless the user says otherwise (dcpRBFThreads)
+    #ifdef _OPENMP
+    const label nThreads = dcpRBFThreads::set();
+    Info<< typeName << ": " << nThreads << " OpenMP thread(s)"
         << (Pstream::parRun() ? " per processor" : "")
         << " (set OMP_NUM_THREADS to change)" << endl;
     #endif

@@ -19,7 +19,7 @@ void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
     lastPoints_ = points0() + pointDisplacement_.primitiveField();
     twoDCorrectPoints(lastPoints_);
     lastQuality_ =
-        region_.measure(points0(), lastPoints_, max(label(1), settings_.selection().nSwap));
+        region_.measure(lastPoints_, max(label(1), settings_.selection().nSwap));
     r.nCells = lastQuality_.nCells;
     r.minQuality = lastQuality_.minQuality;
     r.meanQuality = lastQuality_.meanQuality;
@@ -165,7 +165,7 @@ Foam::dcpRBFMotionSolver::currentQuality()
     if (!returnReduce(same, andOp<bool>()))
     {
         lastQuality_ =
-            region_.measure(points0(), p, max(label(1), settings_.selection().nSwap));
+            region_.measure(p, max(label(1), settings_.selection().nSwap));
         lastPoints_ = p;
     }
     return lastQuality_;

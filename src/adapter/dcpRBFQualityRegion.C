@@ -12,6 +12,7 @@ License
 
 #include <algorithm>
 
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
@@ -23,11 +24,10 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     const scalar radius,
     const dcprbf::TetQuality::Metric metric
 )
-:
-    quality_(mesh, metric)
 {
     if (movingPoints.rows() == 0)
     {
+        quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
         return;
     }
     const dcprbf::PointTree tree(movingPoints);
@@ -53,6 +53,7 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     }
     cells_.transfer(cells);
     centres_.transfer(centres);
+    quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
 }
 
 
@@ -64,14 +65,19 @@ Foam::label Foam::dcpRBFQualityRegion::size() const
 }
 
 
+Foam::scalarField Foam::dcpRBFQualityRegion::quality(const pointField& p) const
+{
+    return quality_->compute(p);
+}
+
+
 Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
 (
-    const pointField& points0,
     const pointField& p,
     const label n
 ) const
 {
-    const scalarField q(quality_.compute(cells_, points0, p));
+    const scalarField q(quality(p));
 
     summary s;
     s.nCells = size();

@@ -49,7 +49,8 @@ test_hollowCube3D_parallelEqualsSerial() {
 
 # The result does not depend on the number of OpenMP threads (the core's
 # loops are per point, Eigen's own threading is off): 1 and 2 threads give the
-# same points, every selection mode, to round-off of the written digits
+# same points, every selection mode, to round-off of the written digits, and
+# the same cell-quality summary (nCells, minQuality, meanQuality) to the digit
 test_threads_sameResultOn1And2Threads() {
     local selection dir diff failed=()
     for selection in "selection all;" "selection greedy; tolerance 1e-3;" "selection dynamic; tolerance 1e-2;"
@@ -68,6 +69,42 @@ test_threads_sameResultOn1And2Threads() {
             || { failed+=("$dir: $diff"); continue; }
         echo "$dir: 1 vs 2 threads: $diff"
         awk -v r="$(echo "$diff" | cut -d' ' -f2)" 'BEGIN { exit !(r <= 1e-14) }' || failed+=("$dir differs: $diff")
+        # the quality scan: nCells, minQuality, meanQuality identical (17 digits)
+        local q1 q2
+        q1=$(grep -v '^#' "$dir/postProcessing/dcpRBF/0/dcpRBF.dat" | cut -d' ' -f6-8)
+        q2=$(grep -v '^#' "$dir/two/postProcessing/dcpRBF/0/dcpRBF.dat" | cut -d' ' -f6-8)
+        [ -n "$q1" ] && [ "$q1" = "$q2" ] || failed+=("$dir: quality differs: [$q1] vs [$q2]")
     done
     [ ${#failed[@]} -eq 0 ] || fail "$(printf '%s\n' "${failed[@]}")"
+}
+
+# Default thread count (OMP_NUM_THREADS unset): a serial run uses the cores
+# it may run on (all of them; 1 under taskset -c 0), ranks share the node's
+# cores (bound or not: ranks x threads <= cores)
+test_threads_defaultNeverOversubscribes() {
+    local cores n
+    cores=$(nproc)
+    modeRun3D "selection greedy;" || return 1
+    foamDictionary system/controlDict -entry endTime -set 0.1 > /dev/null
+    threadsIn() { sed -n 's/^dcpRBF: \([0-9]*\) OpenMP thread(s).*/\1/p' "$1" | head -n 1; }
+    (unset OMP_NUM_THREADS; run moveDynamicMesh) || return 1
+    n=$(threadsIn log.moveDynamicMesh)
+    [ "$n" = "$cores" ] || fail "serial: $n threads, $cores cores available" || return 1
+    (unset OMP_NUM_THREADS; run taskset -c 0 moveDynamicMesh) || return 1
+    n=$(threadsIn log.taskset)
+    [ "$n" = 1 ] || fail "serial on one core (taskset -c 0): $n threads" || return 1
+    writeFile system/decomposeParDict dictionary <<EOT
+numberOfSubdomains 2;
+method simple; coeffs { n (2 1 1); }
+EOT
+    run decomposePar || return 1
+    (
+        unset OMP_NUM_THREADS
+        export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+        run mpirun --bind-to none -np 2 moveDynamicMesh -parallel
+    ) || return 1
+    n=$(threadsIn log.mpirun)
+    [ -n "$n" ] && [ $((2*n)) -le $((cores > 2 ? cores : 2)) ] \
+        || fail "2 unbound ranks on $cores cores: $n threads each" || return 1
+    echo "threads: serial $cores, taskset 1, 2 ranks $n each ($cores cores)"
 }

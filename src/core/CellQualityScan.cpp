@@ -1,0 +1,271 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+#include "CellQualityScan.hpp"
+#include "TetMeasures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace dcprbf
+{
+
+namespace
+{
+
+//- Keys ranked in place of the quality: where q^6 neither underflows nor
+//  overflows (outside, the quality itself is compared)
+constexpr double keyFloor = 1e-250;
+constexpr double keyCeiling = 1e250;
+
+} // namespace
+
+
+CellQualityScan::CellQualityScan
+(
+    std::vector<std::size_t> cellStart,
+    std::vector<int> cellFaces,
+    std::vector<std::size_t> faceStart,
+    std::vector<int> facePoints,
+    const double* points0,
+    TetQuality::Metric metric
+)
+:
+    cellStart_(std::move(cellStart)),
+    cellFaces_(std::move(cellFaces)),
+    faceStart_(std::move(faceStart)),
+    facePoints_(std::move(facePoints)),
+    metric_(metric),
+    faceCentres0_(3*cellFaces_.size()),
+    cellCentres0_(3*(cellStart_.empty() ? 0 : cellStart_.size() - 1))
+{
+    if (cellStart_.empty() || cellStart_.back() != cellFaces_.size()
+     || faceStart_.empty() || faceStart_.back() != facePoints_.size())
+    {
+        throw std::invalid_argument("CellQualityScan: inconsistent compressed rows");
+    }
+    const std::size_t nFaces = faceStart_.size() - 1;
+    for (const int f : cellFaces_)
+    {
+        if (f < 0 || std::size_t(f) >= nFaces || faceStart_[f + 1] - faceStart_[f] < 3)
+        {
+            throw std::invalid_argument("CellQualityScan: face index or face size");
+        }
+    }
+
+    // The points renumbered in the order in which the cells use them (a
+    // measurement reads them from a compact copy, mostly in order)
+    int maxIndex = -1;
+    for (const int pi : facePoints_)
+    {
+        if (pi < 0) throw std::invalid_argument("CellQualityScan: point index");
+        maxIndex = std::max(maxIndex, pi);
+    }
+    std::vector<int> local(std::size_t(maxIndex + 1), -1);
+    for (const int f : cellFaces_)
+    {
+        for (std::size_t j = faceStart_[f]; j < faceStart_[f + 1]; ++j)
+        {
+            if (local[facePoints_[j]] < 0)
+            {
+                local[facePoints_[j]] = int(pointIds_.size());
+                pointIds_.push_back(facePoints_[j]);
+            }
+        }
+    }
+    for (int& pi : facePoints_) pi = local[pi];
+
+    // Each cell's faces stored with the cell (a face shared by two cells
+    // twice): a measurement reads the topology in order
+    {
+        std::vector<std::size_t> entryStart(1, 0);
+        std::vector<int> entryPoints;
+        entryStart.reserve(cellFaces_.size() + 1);
+        for (int& f : cellFaces_)
+        {
+            entryPoints.insert
+            (
+                entryPoints.end(),
+                facePoints_.begin() + std::ptrdiff_t(faceStart_[f]),
+                facePoints_.begin() + std::ptrdiff_t(faceStart_[f + 1])
+            );
+            f = int(entryStart.size()) - 1;
+            entryStart.push_back(entryPoints.size());
+        }
+        faceStart_.swap(entryStart);
+        facePoints_.swap(entryPoints);
+    }
+    points0_.resize(3*pointIds_.size());
+    for (std::size_t i = 0; i < pointIds_.size(); ++i)
+    {
+        for (int d = 0; d < 3; ++d) points0_[3*i + d] = points0[3*std::size_t(pointIds_[i]) + d];
+    }
+    for (std::size_t i = 0; i + 1 < cellStart_.size(); ++i)
+    {
+        double* cc = &cellCentres0_[3*i];
+        cc[0] = cc[1] = cc[2] = 0;
+        for (std::size_t k = cellStart_[i]; k < cellStart_[i + 1]; ++k)
+        {
+            const int f = cellFaces_[k];
+            double* fc = &faceCentres0_[3*k];
+            fc[0] = fc[1] = fc[2] = 0;
+            for (std::size_t j = faceStart_[f]; j < faceStart_[f + 1]; ++j)
+            {
+                for (int d = 0; d < 3; ++d) fc[d] += points0_[3*std::size_t(facePoints_[j]) + d];
+            }
+            const double n = double(faceStart_[f + 1] - faceStart_[f]);
+            for (int d = 0; d < 3; ++d)
+            {
+                fc[d] /= n;
+                cc[d] += fc[d];
+            }
+        }
+        const double n = double(cellStart_[i + 1] - cellStart_[i]);
+        for (int d = 0; d < 3; ++d) cc[d] /= n;
+    }
+}
+
+
+double CellQualityScan::cellQuality
+(
+    const std::size_t i,
+    const double* x,
+    std::vector<double>& buf,
+    std::vector<double>& pointBuf
+) const
+{
+    const std::size_t k0 = cellStart_[i], k1 = cellStart_[i + 1];
+    buf.resize(3*(k1 - k0));
+    double cc[3] = {0, 0, 0};
+    for (std::size_t k = k0; k < k1; ++k)
+    {
+        const int fi = cellFaces_[k];
+        double* fc = &buf[3*(k - k0)];
+        fc[0] = fc[1] = fc[2] = 0;
+        for (std::size_t j = faceStart_[fi]; j < faceStart_[fi + 1]; ++j)
+        {
+            const double* y = x + 3*std::size_t(facePoints_[j]);
+            fc[0] += y[0]; fc[1] += y[1]; fc[2] += y[2];
+        }
+        const double n = double(faceStart_[fi + 1] - faceStart_[fi]);
+        for (int d = 0; d < 3; ++d)
+        {
+            fc[d] /= n;
+            cc[d] += fc[d];
+        }
+    }
+    for (int d = 0; d < 3; ++d) cc[d] /= double(k1 - k0);
+
+    // The tetrahedra of face k: (cc, fc, a_j, a_j+1). Per face point (its
+    // vertices' edges from the cell centre, the cross products with the
+    // face centre's edge) once, shared by the face's two tetrahedra at it.
+    // The worst tetrahedron by a monotone function of its quality without
+    // cbrt and sqrt (rankKey); its quality computed once. Inverted and
+    // degenerate ones and keys out of the key's range compare by their
+    // quality.
+    const double* cc0 = &cellCentres0_[3*i];
+    const double* x0 = points0_.data();
+    double qOther = std::numeric_limits<double>::max();
+    double bestKey = std::numeric_limits<double>::max(), bestJ = 1, bestA2 = 3;
+    for (std::size_t k = k0; k < k1; ++k)
+    {
+        const int fi = cellFaces_[k];
+        const double* fc0 = &faceCentres0_[3*k];
+        const double* fc = &buf[3*(k - k0)];
+        const std::size_t j0 = faceStart_[fi], n = faceStart_[fi + 1] - j0;
+        double e0[3], f0[3];
+        for (int d = 0; d < 3; ++d)
+        {
+            e0[d] = fc0[d] - cc0[d];
+            f0[d] = fc[d] - cc[d];
+        }
+        const double s0 = TetMeasures::dot(e0, e0);
+
+        // per point: e (3), f (3), w = e0 x e (3), g = f0 x f (3), |e|^2
+        pointBuf.resize(13*n);
+        for (std::size_t j = 0; j < n; ++j)
+        {
+            double* r = &pointBuf[13*j];
+            const std::size_t pi = 3*std::size_t(facePoints_[j0 + j]);
+            for (int d = 0; d < 3; ++d)
+            {
+                r[d] = x0[pi + d] - cc0[d];
+                r[3 + d] = x[pi + d] - cc[d];
+            }
+            TetMeasures::cross(e0, r, r + 6);
+            TetMeasures::cross(f0, r + 3, r + 9);
+            r[12] = TetMeasures::dot(r, r);
+        }
+        for (std::size_t j = 0; j < n; ++j)
+        {
+            const double* ra = &pointBuf[13*j];
+            const double* rb = &pointBuf[13*(j + 1 < n ? j + 1 : 0)];
+            // E0 = (e0, ea, eb), E0^-1 det0 = rows (ea x eb, eb x e0, e0 x ea)
+            double adj0[3];
+            TetMeasures::cross(ra, rb, adj0);
+            const double adj1[3] = {-rb[6], -rb[7], -rb[8]};
+            const double* adj2 = ra + 6;
+            const double det0 = TetMeasures::dot(e0, adj0);
+            const double scale2 = std::max({s0, ra[12], rb[12]});
+            double J = -1, a2 = -1;
+            if (det0*det0 > 1e-28*scale2*scale2*scale2)
+            {
+                // E = (f0, fa, fb): det E = fb . (f0 x fa)
+                J = TetMeasures::dot(rb + 3, ra + 9)/det0;
+                a2 = 0;
+                for (int r = 0; r < 3; ++r)
+                {
+                    for (int c = 0; c < 3; ++c)
+                    {
+                        const double v = f0[r]*adj0[c] + ra[3 + r]*adj1[c] + rb[3 + r]*adj2[c];
+                        a2 += v*v;
+                    }
+                }
+                a2 /= det0*det0;
+            }
+            const double key = (J > 0 && a2 > 0) ? TetMeasures::rankKey(J, a2, metric_) : 0;
+            if (key > keyFloor && key < keyCeiling)
+            {
+                if (key < bestKey)
+                {
+                    bestKey = key;
+                    bestJ = J;
+                    bestA2 = a2;
+                }
+            }
+            else
+            {
+                qOther = std::min(qOther, TetMeasures::quality(J, a2, metric_));
+            }
+        }
+    }
+    return std::min(qOther, bestKey < std::numeric_limits<double>::max()
+        ? TetMeasures::quality(bestJ, bestA2, metric_) : qOther);
+}
+
+
+void CellQualityScan::measure(const double* p, double* q) const
+{
+    const long nPoints = long(pointIds_.size());
+    std::vector<double> x(3*pointIds_.size());
+    const long n = long(size());
+    #pragma omp parallel
+    {
+        #pragma omp for schedule(static)
+        for (long i = 0; i < nPoints; ++i)
+        {
+            const double* y = p + 3*std::size_t(pointIds_[i]);
+            x[3*i] = y[0];
+            x[3*i + 1] = y[1];
+            x[3*i + 2] = y[2];
+        }
+        std::vector<double> buf, pointBuf;
+        #pragma omp for schedule(static, 256)
+        for (long i = 0; i < n; ++i)
+        {
+            q[i] = cellQuality(std::size_t(i), x.data(), buf, pointBuf);
+        }
+    }
+}
+
+} // namespace dcprbf

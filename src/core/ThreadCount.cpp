@@ -1,0 +1,14 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+#include "ThreadCount.hpp"
+
+#include <algorithm>
+
+namespace dcprbf
+{
+
+int threadsPerRank(const int coresAvailable, const int ranksOnNode)
+{
+    return std::max(1, std::max(1, coresAvailable)/std::max(1, ranksOnNode));
+}
+
+} // namespace dcprbf

@@ -1,0 +1,292 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+// Unit tests of the flat cell-quality scan: the same values as the reference
+// TetQuality::compute on the same decomposition, whatever the thread count.
+#include "CellQualityScan.hpp"
+#include "TetMeasures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <omp.h>
+
+#include <algorithm>
+#include <random>
+
+using namespace dcprbf;
+
+namespace
+{
+
+// A block of n x n x n unit hexahedra (points on a lattice), each cell its
+// six faces as point quadrilaterals (orientation as it comes: the quality
+// does not depend on it)
+struct HexBlock
+{
+    int n;
+    std::vector<double> points;
+    std::vector<std::size_t> cellStart{0}, faceStart{0};
+    std::vector<int> cellFaces, facePoints;
+
+    explicit HexBlock(int nn) : n(nn)
+    {
+        for (int k = 0; k <= n; ++k)
+            for (int j = 0; j <= n; ++j)
+                for (int i = 0; i <= n; ++i)
+                {
+                    points.insert(points.end(), {double(i), double(j), 0.8*k});
+                }
+        const auto id = [this](int i, int j, int k) { return i + (n + 1)*(j + (n + 1)*k); };
+        for (int k = 0; k < n; ++k)
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i)
+                {
+                    const int v[8] =
+                    {
+                        id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+                        id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)
+                    };
+                    const int f[6][4] =
+                    {
+                        {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                        {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}
+                    };
+                    for (const auto& face : f)
+                    {
+                        for (const int c : face) facePoints.push_back(v[c]);
+                        faceStart.push_back(facePoints.size());
+                        cellFaces.push_back(int(faceStart.size()) - 2);
+                    }
+                    cellStart.push_back(cellFaces.size());
+                }
+    }
+
+    // The reference: TetQuality::compute on the decomposition
+    double reference(std::size_t c, const std::vector<double>& p, TetQuality::Metric m) const
+    {
+        const auto at = [](const std::vector<double>& x, int i)
+        {
+            return Eigen::Vector3d(x[3*i], x[3*i + 1], x[3*i + 2]);
+        };
+        const auto centre = [&](const std::vector<double>& x, int f)
+        {
+            Eigen::Vector3d s(Eigen::Vector3d::Zero());
+            for (std::size_t j = faceStart[f]; j < faceStart[f + 1]; ++j) s += at(x, facePoints[j]);
+            return Eigen::Vector3d(s/double(faceStart[f + 1] - faceStart[f]));
+        };
+        Eigen::Vector3d cc0(Eigen::Vector3d::Zero()), cc(Eigen::Vector3d::Zero());
+        for (std::size_t k = cellStart[c]; k < cellStart[c + 1]; ++k)
+        {
+            cc0 += centre(points, cellFaces[k]);
+            cc += centre(p, cellFaces[k]);
+        }
+        cc0 /= double(cellStart[c + 1] - cellStart[c]);
+        cc /= double(cellStart[c + 1] - cellStart[c]);
+        double q = 1e300;
+        for (std::size_t k = cellStart[c]; k < cellStart[c + 1]; ++k)
+        {
+            const int f = cellFaces[k];
+            const std::size_t j0 = faceStart[f], j1 = faceStart[f + 1];
+            for (std::size_t j = j0; j < j1; ++j)
+            {
+                const int a = facePoints[j], b = facePoints[j + 1 < j1 ? j + 1 : j0];
+                const Eigen::Vector3d r[4] = {cc0, centre(points, f), at(points, a), at(points, b)};
+                const Eigen::Vector3d x[4] = {cc, centre(p, f), at(p, a), at(p, b)};
+                q = std::min(q, TetQuality::compute(r, x, m));
+            }
+        }
+        return q;
+    }
+
+    CellQualityScan scan(TetQuality::Metric m) const
+    {
+        return CellQualityScan(cellStart, cellFaces, faceStart, facePoints, points.data(), m);
+    }
+};
+
+// Random smooth-ish deformation, large enough to invert some cells
+std::vector<double> deformed(const std::vector<double>& x, double amplitude, unsigned seed)
+{
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<double> p(x);
+    for (std::size_t i = 0; i < p.size(); ++i) p[i] += amplitude*u(gen);
+    return p;
+}
+
+} // namespace
+
+
+TEST(CellQualityScan, TetQualityEqualsTheReferenceMetric)
+{
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int nInverted = 0;
+    for (int t = 0; t < 2000; ++t)
+    {
+        Eigen::Vector3d r[4], c[4];
+        for (int k = 0; k < 4; ++k)
+        {
+            r[k] = Eigen::Vector3d(u(gen), u(gen), u(gen));
+            c[k] = r[k] + (t % 3 ? 0.3 : 1.0)*Eigen::Vector3d(u(gen), u(gen), u(gen));
+        }
+        for (const auto m : {TetQuality::Metric::sizeShape, TetQuality::Metric::size,
+                             TetQuality::Metric::shape})
+        {
+            const double ref = TetQuality::compute(r, c, m);
+            const double q = TetMeasures::tetQuality
+            (
+                r[0].data(), r[1].data(), r[2].data(), r[3].data(),
+                c[0].data(), c[1].data(), c[2].data(), c[3].data(), m
+            );
+            EXPECT_NEAR(q, ref, 1e-10*std::max(1.0, std::abs(ref))) << t;
+            nInverted += (m == TetQuality::Metric::sizeShape && ref <= 0);
+        }
+    }
+    EXPECT_GT(nInverted, 100);   // the inverted branch was exercised
+}
+
+
+TEST(CellQualityScan, DegenerateReferenceIsOne)
+{
+    const double r[4][3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}};
+    const double c[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    EXPECT_EQ(TetMeasures::tetQuality(r[0], r[1], r[2], r[3], c[0], c[1], c[2], c[3],
+                                          TetQuality::Metric::sizeShape), 1.0);
+}
+
+
+TEST(CellQualityScan, CellsEqualTheReferenceDecompositionIncludingInverted)
+{
+    const HexBlock b(6);
+    const std::vector<double> p(deformed(b.points, 0.45, 3));
+    for (const auto m : {TetQuality::Metric::sizeShape, TetQuality::Metric::size,
+                         TetQuality::Metric::shape})
+    {
+        const CellQualityScan scan(b.scan(m));
+        ASSERT_EQ(scan.size(), 216u);
+        std::vector<double> q(scan.size());
+        scan.measure(p.data(), q.data());
+        int nInverted = 0;
+        for (std::size_t c = 0; c < q.size(); ++c)
+        {
+            const double ref = b.reference(c, p, m);
+            EXPECT_NEAR(q[c], ref, 1e-10*std::max(1.0, std::abs(ref))) << c;
+            nInverted += (ref <= 0);
+        }
+        EXPECT_GT(nInverted, 0);
+        EXPECT_LT(nInverted, 216);
+    }
+}
+
+
+TEST(CellQualityScan, RigidMotionIsOne)
+{
+    const HexBlock b(3);
+    std::vector<double> p(b.points.size());
+    const double c = std::cos(0.6), s = std::sin(0.6);
+    for (std::size_t i = 0; i < p.size()/3; ++i)
+    {
+        const double* x = &b.points[3*i];
+        p[3*i] = c*x[0] - s*x[1] + 5;
+        p[3*i + 1] = s*x[0] + c*x[1] - 2;
+        p[3*i + 2] = x[2] + 1;
+    }
+    const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
+    std::vector<double> q(scan.size());
+    scan.measure(p.data(), q.data());
+    for (const double x : q) EXPECT_NEAR(x, 1.0, 1e-12);
+}
+
+
+TEST(CellQualityScan, BitIdenticalOnOneAndTwoThreads)
+{
+    const HexBlock b(12);
+    const std::vector<double> p(deformed(b.points, 0.3, 11));
+    const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
+    std::vector<double> q1(scan.size()), q2(scan.size());
+    const int nThreads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    scan.measure(p.data(), q1.data());
+    omp_set_num_threads(2);
+    scan.measure(p.data(), q2.data());
+    omp_set_num_threads(nThreads);
+    EXPECT_EQ(q1, q2);
+}
+
+
+TEST(CellQualityScan, RefusesInconsistentRows)
+{
+    const double p0[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    EXPECT_THROW(CellQualityScan({0, 2}, {0}, {0, 3}, {0, 1, 2}, p0), std::invalid_argument);
+    EXPECT_THROW(CellQualityScan({0, 1}, {1}, {0, 3}, {0, 1, 2}, p0), std::invalid_argument);
+    EXPECT_THROW(CellQualityScan({0, 1}, {0}, {0, 2}, {0, 1}, p0), std::invalid_argument);
+}
+
+
+TEST(CellQualityScan, KeyRanksAsTheQuality)
+{
+    // rankKey increases with the quality for every metric, so the worst
+    // tetrahedron of a cell is found without cbrt and sqrt
+    std::mt19937 gen(13);
+    std::uniform_real_distribution<double> logJ(-6, 6), logA(0, 8);
+    for (const auto m : {TetQuality::Metric::sizeShape, TetQuality::Metric::size,
+                         TetQuality::Metric::shape})
+    {
+        for (int t = 0; t < 5000; ++t)
+        {
+            const double J1 = std::exp(logJ(gen)), J2 = std::exp(logJ(gen));
+            // |A|^2 >= 3 J^(2/3) (arithmetic-geometric mean of the squared
+            // singular values)
+            const double a1 = 3*std::cbrt(J1*J1)*std::exp(logA(gen));
+            const double a2 = 3*std::cbrt(J2*J2)*std::exp(logA(gen));
+            const double q1 = TetMeasures::quality(J1, a1, m);
+            const double q2 = TetMeasures::quality(J2, a2, m);
+            if (std::abs(q1 - q2) > 1e-12*std::max(q1, q2))
+            {
+                EXPECT_EQ(q1 < q2, TetMeasures::rankKey(J1, a1, m) < TetMeasures::rankKey(J2, a2, m));
+            }
+        }
+    }
+}
+
+
+TEST(CellQualityScan, ExtremeTetrahedraCompareByTheirQuality)
+{
+    // a cell flattened to J ~ 1e-45 (q^6 underflows) and one stretched
+    // 1e30 times (overflows): still the reference value
+    const HexBlock b(2);
+    for (const double factor : {1e-45, 1e30})
+    {
+        std::vector<double> p(b.points);
+        for (std::size_t i = 0; i < p.size()/3; ++i)
+        {
+            if (p[3*i] < 1.5 && p[3*i + 1] < 1.5 && p[3*i + 2] < 1.0) continue;
+            p[3*i + 2] = 0.8 + (p[3*i + 2] - 0.8)*factor;
+        }
+        const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
+        std::vector<double> q(scan.size());
+        scan.measure(p.data(), q.data());
+        for (std::size_t c = 0; c < q.size(); ++c)
+        {
+            const double ref = b.reference(c, p, TetQuality::Metric::sizeShape);
+            EXPECT_NEAR(q[c], ref, 1e-10*std::abs(ref) + 1e-300) << c << ' ' << factor;
+        }
+    }
+}
+
+
+TEST(CellQualityScan, DegenerateReferenceCellsAreOne)
+{
+    // a flat reference block: every tetrahedron degenerate, quality 1
+    // (TetQuality's convention) whatever the deformation
+    HexBlock b(2);
+    for (std::size_t i = 2; i < b.points.size(); i += 3) b.points[i] = 0;
+    const std::vector<double> p(deformed(b.points, 0.3, 17));
+    const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
+    std::vector<double> q(scan.size());
+    scan.measure(p.data(), q.data());
+    for (std::size_t c = 0; c < q.size(); ++c)
+    {
+        EXPECT_EQ(b.reference(c, p, TetQuality::Metric::sizeShape), 1.0);
+        EXPECT_EQ(q[c], 1.0) << c;
+    }
+}

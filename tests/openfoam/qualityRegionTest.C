@@ -1,0 +1,104 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF tests: the quality region's flat scan against dcpRBFCellQuality
+-------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
+\*---------------------------------------------------------------------------*/
+
+#include "testHelpers.H"
+#include "dcpRBFQualityRegion.H"
+#include "dcpRBFCellQuality.H"
+#include "dcpRBFPlaneProjection.H"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace Foam;
+using namespace Foam::dcpRBFTest;
+
+namespace
+{
+
+//- The region within radius of the bottom patch, measured by its flat scan
+//  and cell by cell by dcpRBFCellQuality, on a randomly deformed mesh with
+//  one cell folded
+void compareScans(const label dim, const scalar radius)
+{
+    testCase c(dim, 10, "movingPatches (bottom); staticPatches (top); supportRadius 1;");
+    const polyMesh& mesh = c.mesh();
+    const pointField p0(mesh.points());
+    const dcpRBFPlaneProjection projection(mesh);
+    const polyPatch& bottom = mesh.boundaryMesh()[mesh.boundaryMesh().findPatchID("bottom")];
+    const dcprbf::Points moving(projection.toCore(pointField(bottom.localPoints())));
+
+    for (const auto metric :
+        {dcprbf::TetQuality::Metric::sizeShape, dcprbf::TetQuality::Metric::shape})
+    {
+        const dcpRBFQualityRegion region(mesh, projection, p0, moving, radius, metric);
+        ASSERT_GT(region.cells().size(), 0);
+        if (radius < 1)
+        {
+            ASSERT_LT(region.cells().size(), mesh.nCells());
+        }
+
+        // random displacement of 0.2 cell sizes in the plane (2D: the same
+        // for front and back points), then a point pushed through its cell
+        std::mt19937 gen(5);
+        std::uniform_real_distribution<scalar> u(-0.02, 0.02);
+        pointField p(p0);
+        forAll(p, i)
+        {
+            std::mt19937 g(unsigned(1e4*p0[i].x()) + 7919*unsigned(1e4*p0[i].y()));
+            const scalar dz = dim == 3 ? u(gen) : 0;
+            p[i] += vector(u(g), u(g), dz);
+        }
+        const label victim = mesh.cellPoints()[region.cells()[0]][0];
+        const point inside(mesh.cellCentres()[region.cells()[0]]);
+        forAll(p, i)
+        {
+            // every point at the victim's position (2D: its front/back twin)
+            if (mag(p0[i].x() - p0[victim].x()) + mag(p0[i].y() - p0[victim].y()) < 1e-9)
+            {
+                p[i].x() = 2*inside.x() - p0[victim].x();
+                p[i].y() = 2*inside.y() - p0[victim].y();
+            }
+        }
+
+        const scalarField q(region.quality(p));
+        const scalarField ref
+        (
+            dcpRBFCellQuality(mesh, metric).compute(region.cells(), p0, p)
+        );
+        ASSERT_EQ(q.size(), ref.size());
+        label nInverted = 0;
+        forAll(q, i)
+        {
+            EXPECT_NEAR(q[i], ref[i], 1e-10) << i;
+            nInverted += (ref[i] <= 0);
+        }
+        EXPECT_GT(nInverted, 0);
+        EXPECT_NEAR(min(q), min(ref), 1e-10);
+
+        const dcpRBFQualityRegion::summary s(region.measure(p, 2));
+        EXPECT_EQ(s.nCells, region.cells().size());
+        EXPECT_EQ(s.minQuality, min(q));
+        EXPECT_EQ(s.nInverted, nInverted);
+        EXPECT_EQ(s.worst[0][0], min(q));
+    }
+}
+
+TEST(QualityRegion, FlatScanEqualsCellQuality3D)
+{
+    compareScans(3, 2);
+    compareScans(3, 0.35);
+}
+
+TEST(QualityRegion, FlatScanEqualsCellQuality2D)
+{
+    compareScans(2, 2);
+    compareScans(2, 0.35);
+}
+
+} // namespace
