@@ -39,22 +39,39 @@ test_rotation2D_airfoil_pitch150deg_validWhereDisplacementFolds() {
     meshOkAtEveryTime
 }
 
-# 3D: the airfoil mesh with symmetry sides instead of empty ones: the
-# motion is solved in 3D (3D fit, star-shaped ring on the sphere), pitched
-# 120 deg; displacement interpolation folds cells, rotationInterpolation not
-test_rotation3D_airfoilSlab_pitch120deg_validWhereDisplacementFolds() {
+# airfoilSlab3D AMPLITUDE: the airfoil mesh with symmetry sides instead of
+# empty ones, so that the motion is solved in 3D (3D fit, star-shaped ring on
+# the sphere), pitched by AMPLITUDE [rad] at t = 1
+airfoilSlab3D() {
     write_motionControls .
     airfoilMesh 0.04 1.0 || return 1
     foamDictionary constant/polyMesh/boundary -entry entry0/frontAndBack/type -set symmetry > /dev/null
-    pitchingPointDisplacement wing "(0 0 -1)" "(0.25 0 0)" 2.0944 \
+    pitchingPointDisplacement wing "(0 0 -1)" "(0.25 0 0)" "$1" \
         "(inlet|outlet|topAndBottom)" "frontAndBack { type symmetry; }"
+}
+
+rotationCoeffs3D="movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5; rotationInterpolation true; rotation { centre (0.25 0 0.05); }"
+
+# 3D, pitched 120 deg: displacement interpolation folds cells,
+# rotationInterpolation not
+test_rotation3D_airfoilSlab_pitch120deg_validWhereDisplacementFolds() {
+    airfoilSlab3D 2.0944 || return 1
     displacementFolds "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5;" || return 1
-    dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5; rotationInterpolation true; rotation { centre (0.25 0 0.05); }"
+    dynamicMeshDict "$rotationCoeffs3D"
     run moveDynamicMesh || return 1
     grep -q "3D, selection" log.moveDynamicMesh || fail "not solved in 3D" || return 1
     grep -q "rotation 120.000.* about (0 0 -1)" log.moveDynamicMesh \
         || fail "no rotation of 120 deg about -z in the log" || return 1
     meshOkAtEveryTime
+}
+
+# 3D, 2 processors (simple decomposition through the wing) equal serial,
+# greedy selection (the rest is zero: rotation only)
+test_rotation3D_airfoilSlab_parallelEqualsSerial() {
+    airfoilSlab3D 2.0944 || return 1
+    foamDictionary system/controlDict -entry endTime -set 0.5 > /dev/null
+    dynamicMeshDict "$rotationCoeffs3D controlPoints { selection greedy; }"
+    parallelEqualsSerial 0.5
 }
 
 # the bending, stretching wing (a non-rigid rest) under rotationInterpolation
