@@ -146,9 +146,18 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) cons
             << "Time " << mesh().time().timeName() << ": "
             << lastQuality_.nInverted << " inverted or degenerate cells"
             << " (quality <= 0, minimum " << r.minQuality << "). The mesh is"
-            << " invalid: reduce the motion per step, enlarge supportRadius"
-            << (rotation_.active() ? "" : ", try rotationInterpolation true")
-            << " or use selection dynamic with a qualityFloor." << endl;
+            << " invalid: "
+            << (
+                   rotation_.active()
+                 ? "rotationInterpolation: the twist between the bodies and the"
+                   " static patches is too large for the cells there (check"
+                   " each body's centre is its pivot; refine the cells between"
+                   " body and walls, or move the walls away)."
+                 : "reduce the motion per step, enlarge supportRadius, use"
+                   " selection dynamic with a qualityFloor, or, for large"
+                   " rotations, rotationInterpolation true."
+               )
+            << endl;
     }
 }
 

@@ -10,6 +10,7 @@ License
 #include "dcpRBFDictReader.H"
 #include "Time.H"
 #include "unitConversion.H"
+#include "mathematicalConstants.H"
 
 #include <cmath>
 
@@ -19,8 +20,7 @@ const Foam::Enum<Foam::dcpRBFRotation::blendProfile>
 Foam::dcpRBFRotation::blendProfileNames
 ({
     {blendProfile::star, "star"},
-    {blendProfile::log, "log"},
-    {blendProfile::cellSize, "cellSize"}
+    {blendProfile::log, "log"}
 });
 
 
@@ -31,6 +31,16 @@ void Foam::dcpRBFRotation::readState()
     motions_.assign(bodyNames_.size(), dcprbf::RigidMotion());
     if (!state_->found("rotations"))
     {
+        if (state_->time().value() != 0)
+        {
+            WarningInFunction
+                << "No rotation state " << state_->objectPath() << ": the"
+                << " bodies' angles start from the rotation that takes points0"
+                << " to the first step's boundary the short way (within 180"
+                << " deg). A body turned further since points0 would be turned"
+                << " back the other way: restart from a time written with"
+                << " rotationInterpolation on" << endl;
+        }
         return;
     }
     const List<vector> rotations(state_->get<List<vector>>("rotations"));
@@ -70,7 +80,7 @@ Foam::dcpRBFRotation::dcpRBFRotation
     {
         FatalIOErrorInFunction(coeffs)
             << "Keyword rotation must be a sub-dictionary, e.g."
-            << " rotation { bodies ((wing)); }" << exit(FatalIOError);
+            << " rotation { centre (0.25 0 0); }" << exit(FatalIOError);
     }
     if (!active_)
     {
@@ -89,8 +99,15 @@ Foam::dcpRBFRotation::dcpRBFRotation
     r.checkKeywords({"bodies", "centre", "blendProfile", "blendSlope", "blendRamp"});
     readBodies(mesh, dict, settings);
     profile_ = r.getEnum("blendProfile", blendProfileNames, blendProfile::star);
-    slope_ = r.getScalar("blendSlope", 0.25, -SMALL, 10);
-    ramp_ = r.getScalar("blendRamp", 0.1, -SMALL, 1);
+    slope_ = dict.getOrDefault<scalar>("blendSlope", 0.25);
+    ramp_ = dict.getOrDefault<scalar>("blendRamp", 0.1);
+    if (!(slope_ >= 0 && slope_ <= 10) || !(ramp_ >= 0 && ramp_ <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword " << (slope_ >= 0 && slope_ <= 10 ? "blendRamp" : "blendSlope")
+            << " out of range: blendSlope " << slope_ << " (allowed [0, 10]),"
+            << " blendRamp " << ramp_ << " (allowed [0, 1])" << exit(FatalIOError);
+    }
     if (profile_ != blendProfile::star)
     {
         for (const word k : {"blendSlope", "blendRamp"})
@@ -133,6 +150,7 @@ dcprbf::Values Foam::dcpRBFRotation::fit(const dcprbf::Values& d)
 {
     const dcprbf::Points& x = boundary_.points();
     List<vector> rotations(bodyNames_.size());
+    std::vector<dcprbf::RigidMotion> turns(bodyNames_.size());
     forAll(bodyNames_, b)
     {
         const std::vector<Eigen::Index>& idx = bodyPoints_[b];
@@ -143,23 +161,38 @@ dcprbf::Values Foam::dcpRBFRotation::fit(const dcprbf::Values& d)
             xb.row(k) = x.row(idx[k]);
             db.row(k) = d.row(idx[k]);
         }
+        const Eigen::Vector3d last(motions_[b].rotation);
         motions_[b] =
-            dcprbf::fitRigidMotion(xb, db, dim_, motions_[b].rotation)
-           .about(centres_[b]);
+            dcprbf::fitRigidMotion(xb, db, dim_, last).about(centres_[b]);
         const Eigen::Vector3d& w = motions_[b].rotation;
         rotations[b] = vector(w.x(), w.y(), w.z());
+        if ((w - last).norm() > 0.5*constant::mathematical::pi)
+        {
+            WarningInFunction
+                << "Body " << bodyNames_[b] << " turned by "
+                << radToDeg((w - last).norm()) << " deg in one step: the angle"
+                << " is only known modulo 360 deg from the last step's (and"
+                << " from zero without " << state_->objectPath() << ")"
+                << endl;
+        }
+
+        // the blended part: the rotation about the centre; the translation
+        // is interpolated with the rest
+        turns[b] = motions_[b];
+        turns[b].translation.setZero();
     }
     state_->set("bodies", bodyNames_);
     state_->set("rotations", rotations);
 
-    // The rest: prescribed minus each body's rigid motion
+    // The rest: prescribed minus each body's rotation about its centre
+    // (its translation and its non-rigid motion)
     dcprbf::Values rest(d);
     for (label i = 0; i < boundary_.size(); ++i)
     {
         if (bodyOf_[i] >= 0)
         {
             rest.row(i) -=
-                motions_[bodyOf_[i]].displacement(x.row(i).transpose()).transpose();
+                turns[bodyOf_[i]].displacement(x.row(i).transpose()).transpose();
         }
     }
     const scalar scale = d.rows() ? d.cwiseAbs().maxCoeff() : 0;
@@ -168,7 +201,7 @@ dcprbf::Values Foam::dcpRBFRotation::fit(const dcprbf::Values& d)
         rest.setZero();
     }
 
-    dcprbf::blendedRigidDisplacement(motions_, evalPoints_, weights_, displacement_);
+    dcprbf::blendedRigidDisplacement(turns, evalPoints_, weights_, displacement_);
     return rest;
 }
 

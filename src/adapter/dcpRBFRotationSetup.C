@@ -16,6 +16,7 @@ Description
 #include "pointFields.H"
 #include "Time.H"
 #include "clockTime.H"
+#include "OStringStream.H"
 
 #include <cmath>
 
@@ -33,13 +34,20 @@ void Foam::dcpRBFRotation::readBodies
     List<const dictionary*> bodyDicts;
     if (dict.found("bodies"))
     {
-        if (!dict.isDict("bodies") || dict.found("centre"))
+        if (!dict.isDict("bodies"))
         {
             FatalIOErrorInFunction(dict)
                 << "Keyword bodies must be a sub-dictionary of bodies, each"
                 << " with patches and an optional centre, e.g. bodies { wing"
-                << " { patches (wing); centre (0.25 0 0); } }; then centre"
-                << " belongs in each body" << exit(FatalIOError);
+                << " { patches (wing); centre (0.25 0 0); } }"
+                << exit(FatalIOError);
+        }
+        if (dict.found("centre"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword centre: with bodies, each body has its own centre"
+                << " (bodies { wing { patches (wing); centre (0.25 0 0); } });"
+                << " remove centre from rotation" << exit(FatalIOError);
         }
         const dictionary& bodies = dict.subDict("bodies");
         for (const entry& e : bodies)
@@ -99,6 +107,50 @@ void Foam::dcpRBFRotation::readBodies
         }
     }
     syncTools::syncPointList(mesh, mark, maxEqOp<label>(), label(0));
+    for (const label patchi : settings.movingPatchIDs())
+    {
+        if (bodyOfPatch[patchi] < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword bodies: moving patch " << patches[patchi].name()
+                << " is in no body. Allowed: every patch of movingPatches in"
+                << " one body" << exit(FatalIOError);
+        }
+    }
+
+    // Bodies that touch (share points) cannot turn apart: one body
+    labelList lowest(mesh.nPoints(), labelMax);
+    forAll(groups, b)
+    {
+        for (const label patchi : groups[b])
+        {
+            for (const label pointi : patches[patchi].meshPoints())
+            {
+                lowest[pointi] = min(lowest[pointi], b + 1);
+            }
+        }
+    }
+    syncTools::syncPointList(mesh, lowest, minEqOp<label>(), labelMax);
+    const label nb = groups.size();
+    label touching = -1;     // lower body x nb + higher body
+    forAll(mark, pointi)
+    {
+        if (mark[pointi] > 0 && lowest[pointi] != mark[pointi])
+        {
+            touching = max(touching, (lowest[pointi] - 1)*nb + mark[pointi] - 1);
+        }
+    }
+    reduce(touching, maxOp<label>());
+    if (touching >= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword bodies: bodies " << bodyNames_[touching/nb]
+            << " and " << bodyNames_[touching % nb] << " share boundary"
+            << " points: touching bodies cannot turn apart. Put their patches"
+            << " in one body (its best-fit motion is blended, the relative"
+            << " motion, e.g. a flap's deflection, is interpolated as the"
+            << " non-rigid rest)" << exit(FatalIOError);
+    }
 
     pointField marks(mesh.nPoints(), Zero);
     forAll(mark, pointi)
@@ -141,43 +193,6 @@ void Foam::dcpRBFRotation::readBodies
             centres_[b] /= double(bodyPoints_[b].size());
         }
     }
-}
-
-
-std::vector<double> Foam::dcpRBFRotation::cellExtents
-(
-    const polyMesh& mesh,
-    const Eigen::Vector3d& centre,
-    const scalar inner,
-    const scalar outer
-) const
-{
-    scalarList h(nProfileBins_, scalar(0));
-    const scalar dr = (outer - inner)/nProfileBins_;
-    const labelListList& cellPoints = mesh.cellPoints();
-    forAll(cellPoints, celli)
-    {
-        scalar rMin = GREAT, rMax = -GREAT;
-        for (const label pointi : cellPoints[celli])
-        {
-            const scalar r = (evalPoints_.row(pointi).transpose() - centre).norm();
-            rMin = min(rMin, r);
-            rMax = max(rMax, r);
-        }
-        if (rMax <= inner || rMin >= outer)
-        {
-            continue;
-        }
-        const label k0 = max(label(0), label((rMin - inner)/dr));
-        const label k1 = min(nProfileBins_ - 1, label((rMax - inner)/dr));
-        for (label k = k0; k <= k1; ++k)
-        {
-            h[k] = max(h[k], rMax - rMin);
-        }
-    }
-    Pstream::listCombineGather(h, maxEqOp<scalar>());
-    Pstream::listCombineScatter(h);
-    return std::vector<double>(h.begin(), h.end());
 }
 
 
@@ -226,48 +241,43 @@ void Foam::dcpRBFRotation::computeWeights
                 blend.setStar(b, slope_, ramp_, grid);
             }
         }
-        else if (profile_ == blendProfile::cellSize)
-        {
-            forAll(bodyNames_, b)
-            {
-                if (std::isfinite(blend.outerRadius(b)))
-                {
-                    blend.setDensity
-                    (
-                        b,
-                        dcprbf::BodyBlend::cellAdaptedDensity
-                        (
-                            cellExtents
-                            (
-                                mesh, centres_[b], blend.innerRadius(b),
-                                blend.outerRadius(b)
-                            )
-                        )
-                    );
-                }
-            }
-        }
         weights_ = blend.weights(evalPoints_);
         writeBlend(mesh);
         Info<< "dcpRBF: rotationInterpolation, " << bodyNames_.size()
-            << " bodies, blend computed in " << timer.elapsedTime() << " s"
-            << nl;
+            << (bodyNames_.size() == 1 ? " body" : " bodies")
+            << ", blend computed in " << timer.elapsedTime() << " s" << nl;
         forAll(bodyNames_, b)
         {
             Info<< "    " << bodyNames_[b] << ": " << bodyPoints_[b].size()
                 << " boundary points, centre "
                 << projection_.pointFromCore(centres_[b].data())
-                << ", farthest body point " << blend.innerRadius(b)
-                << ", nearest static point " << blend.outerRadius(b)
-                << " from it, blendProfile " << blendProfileNames[profile_]
+                << ", farthest body point " << blend.innerRadius(b);
+            if (std::isfinite(blend.outerRadius(b)))
+            {
+                Info<< ", nearest static point " << blend.outerRadius(b);
+            }
+            else
+            {
+                Info<< ", no static point (the whole mesh moves with it)";
+            }
+            Info<< " from it, blendProfile " << blendProfileNames[profile_]
                 << nl;
         }
     }
     catch (const dcprbf::Error& e)
     {
+        OStringStream centres;
+        for (const Eigen::Vector3d& c : centres_)
+        {
+            centres << projection_.pointFromCore(c.data()) << ' ';
+        }
         FatalIOErrorInFunction(dict)
             << "rotationInterpolation: " << e.what() << nl << "    Bodies "
-            << bodyNames_ << exit(FatalIOError);
+            << bodyNames_ << ", centres (keyword centre) " << centres.str()
+            << nl << "    A static point (or another body's) is closer to the"
+            << " centre than the body in some direction: give the body's pivot"
+            << " as its centre (keyword centre), inside or next to the body"
+            << exit(FatalIOError);
     }
 }
 

@@ -18,7 +18,6 @@ BodyBlend::BodyBlend
     centres_(centres),
     inner_(centres.size(), -1),
     outer_(centres.size(), std::numeric_limits<double>::infinity()),
-    cumulative_(centres.size()),
     stars_(centres.size()),
     ramps_(centres.size(), 0.0),
     boundary_(boundary),
@@ -68,8 +67,7 @@ void BodyBlend::checkRadialRoom(int b) const
             + ": a static or another body's point is " + std::to_string(outer_[b])
             + " from its centre, inside the body's own extent "
             + std::to_string(inner_[b]) + ": no room to blend its rotation"
-            " radially (move the centre, use the star-shaped ring, or leave the"
-            " body out of the rotation)");
+            " radially");
     }
 }
 
@@ -111,7 +109,7 @@ double BodyBlend::profile(int b, const Eigen::Vector3d& x) const
             throw Error("BodyBlend: body " + std::to_string(b)
                 + ": no room between the body and the static boundary in the"
                 " direction of a point at distance " + std::to_string(r)
-                + " from its centre (reduce the angular slope)");
+                + " from its centre");
         }
         const double t = (lnOut - std::log(r))/(lnOut - lnIn);
         return t >= 1 ? 1 : t <= 0 ? 0 : ramped(t, ramps_[b]);
@@ -121,15 +119,7 @@ double BodyBlend::profile(int b, const Eigen::Vector3d& x) const
     {
         return 0;
     }
-    const std::vector<double>& F = cumulative_[b];
-    if (F.empty())
-    {
-        return std::log(outer_[b]/r)/std::log(outer_[b]/inner_[b]);
-    }
-    const double t = (r - inner_[b])/(outer_[b] - inner_[b])*double(F.size() - 1);
-    const std::size_t k = std::min(std::size_t(t), F.size() - 2);
-    const double f = t - double(k);
-    return 1 - ((1 - f)*F[k] + f*F[k + 1]);
+    return std::log(outer_[b]/r)/std::log(outer_[b]/inner_[b]);
 }
 
 
@@ -198,53 +188,5 @@ Eigen::MatrixXd BodyBlend::weights(const Points& x) const
     return w;
 }
 
-
-void BodyBlend::setDensity(int body, const std::vector<double>& density)
-{
-    if (body < 0 || body >= int(centres_.size()))
-    {
-        throw Error("BodyBlend::setDensity: no body " + std::to_string(body));
-    }
-    if (density.empty())
-    {
-        throw Error("BodyBlend::setDensity: empty density");
-    }
-    std::vector<double> F(density.size() + 1, 0.0);
-    for (std::size_t k = 0; k < density.size(); ++k)
-    {
-        if (!(density[k] > 0) || !std::isfinite(density[k]))
-        {
-            throw Error("BodyBlend::setDensity: density " + std::to_string(density[k])
-                + " in bin " + std::to_string(k) + " (must be positive)");
-        }
-        F[k + 1] = F[k] + density[k];
-    }
-    for (double& f : F)
-    {
-        f /= F.back();
-    }
-    cumulative_[body] = std::move(F);
-}
-
-
-std::vector<double> BodyBlend::cellAdaptedDensity(const std::vector<double>& cellExtent)
-{
-    std::vector<double> h(cellExtent);
-    // bins without a cell: the nearest bin's extent (forward, then backward)
-    for (std::size_t k = 1; k < h.size(); ++k)
-    {
-        if (!(h[k] > 0)) h[k] = h[k - 1];
-    }
-    for (std::size_t k = h.size(); k-- > 1;)
-    {
-        if (!(h[k - 1] > 0)) h[k - 1] = h[k];
-    }
-    std::vector<double> density(h.size(), 1.0);
-    for (std::size_t k = 0; k < h.size(); ++k)
-    {
-        if (h[k] > 0) density[k] = 1/h[k];
-    }
-    return density;
-}
 
 } // namespace dcprbf

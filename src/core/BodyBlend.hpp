@@ -52,19 +52,6 @@ public:
     //- Weights at points x (x.rows() x bodies), threaded per point
     Eigen::MatrixXd weights(const Points& x) const;
 
-    //- Replace body b's log profile: -ds/dr proportional to density[k] on
-    //  the k-th of density.size() equal bins of [R_in, R_out] (s = 1 at
-    //  R_in, 0 at R_out). Throws Error for an empty or non-positive density
-    void setDensity(int body, const std::vector<double>& density);
-
-    //- The density that spreads the twist by the mesh: with h_k the
-    //  largest radial extent of the cells in bin k (cellExtent), the
-    //  density 1/h_k gives every cell of the largest size at its radius the
-    //  same share of the angle (the first to fold are the largest cells:
-    //  their corners turn by the most different angles). Bins without a
-    //  cell take their neighbours' extent.
-    static std::vector<double> cellAdaptedDensity(const std::vector<double>& cellExtent);
-
     //- Replace body b's profile by the star-shaped ring (StarEnvelope with
     //  slope kappa): s = 1 - F(t), t = ln(r / R_in(u)) / ln(R_out(u) /
     //  R_in(u)) in [0, 1], u the direction from the centre; F(t) = t but
@@ -84,9 +71,6 @@ private:
     std::vector<Eigen::Vector3d> centres_;
     std::vector<double> inner_;
     std::vector<double> outer_;
-    //- Per body: 1 - s at the bin edges of [R_in, R_out] (empty: log)
-    std::vector<std::vector<double>> cumulative_;
-
     //- Per body: the star-shaped ring (null: radial) and its ramp
     std::vector<std::shared_ptr<const StarEnvelope>> stars_;
     std::vector<double> ramps_;

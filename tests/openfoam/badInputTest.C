@@ -81,6 +81,8 @@ std::vector<badInput> catalogue()
         {"RotationBodyUnknownPatch", mv + st + r + "rotationInterpolation true; rotation { bodies { b { patches (wing); } } }", "patches"},
         {"RotationBodyUnknownKeyword", mv + st + r + "rotationInterpolation true; rotation { bodies { b { patches (bottom); pivot (0 0 0); } } }", "pivot"},
         {"RotationNoRoomAroundTheCentre", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0.9 0); }", "no room"},
+        {"MovingPatchInNoBody", "movingPatches (bottom left); staticPatches (top right);" + r + "rotationInterpolation true; rotation { bodies { b { patches (bottom); } } }", "in no body"},
+        {"TouchingBodies", "movingPatches (bottom left); staticPatches (top right);" + r + "rotationInterpolation true; rotation { bodies { a { patches (bottom); } b { patches (left); } } }", "share boundary"},
         {"UnknownBlendProfile", mv + st + r + "rotationInterpolation true; rotation { blendProfile spiral; }", "blendProfile"},
         {"BlendSlopeWithLogProfile", mv + st + r + "rotationInterpolation true; rotation { blendProfile log; blendSlope 0.1; }", "blendSlope"},
         {"NegativeBlendSlope", mv + st + r + "rotationInterpolation true; rotation { blendSlope -1; }", "blendSlope"},
