@@ -71,7 +71,6 @@ Foam::dcpRBFRotation::dcpRBFRotation
 )
 :
     active_(dcpRBFDictReader(coeffs).getSwitch("rotationInterpolation", false)),
-    dim_(projection.dim()),
     projection_(projection),
     boundary_(boundary),
     evalPoints_(evalPoints)
@@ -163,7 +162,8 @@ dcprbf::Values Foam::dcpRBFRotation::fit(const dcprbf::Values& d)
         }
         const Eigen::Vector3d last(motions_[b].rotation);
         motions_[b] =
-            dcprbf::fitRigidMotion(xb, db, dim_, last).about(centres_[b]);
+            dcprbf::fitRigidMotion(xb, db, projection_.dim(), last)
+           .about(centres_[b]);
         const Eigen::Vector3d& w = motions_[b].rotation;
         rotations[b] = vector(w.x(), w.y(), w.z());
         if ((w - last).norm() > 0.5*constant::mathematical::pi)
@@ -211,10 +211,10 @@ void Foam::dcpRBFRotation::report(Ostream& os) const
     forAll(bodyNames_, b)
     {
         const dcprbf::RigidMotion& m = motions_[b];
-        const scalar angle = dim_ == 2 ? m.rotation.z() : m.rotation.norm();
+        const scalar angle = projection_.dim() == 2 ? m.rotation.z() : m.rotation.norm();
         os  << "    body " << bodyNames_[b] << ": rotation " << radToDeg(angle)
             << " deg";
-        if (dim_ == 3 && angle > 0)
+        if (projection_.dim() == 3 && angle > 0)
         {
             const Eigen::Vector3d a(m.rotation/angle + Eigen::Vector3d::Zero());  // no -0
             os  << " about (" << a.x() << ' ' << a.y() << ' ' << a.z() << ')';

@@ -58,7 +58,7 @@ void Foam::dcpRBFRotation::computeWeights
             // 3D with many boundary points: radii from a 2-degree grid of
             // directions (decided on the global set: the same on every
             // processor); else exact at every point
-            const int grid = (dim_ == 3 && boundary_.size() > 5000) ? 90 : 0;
+            const int grid = (projection_.dim() == 3 && boundary_.size() > 5000) ? 90 : 0;
             forAll(bodyNames_, b)
             {
                 blend.setStar(b, slope_, ramp_, grid);
