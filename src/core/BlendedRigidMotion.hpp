@@ -17,6 +17,10 @@
 // b's exactly; where the weights sum to 1 and every body moves by the same
 // rigid motion, x' is that motion exactly whatever the weights (c and t
 // enter linearly for a common R); where every weight is 0 nothing moves.
+//
+// dcpRBFRotation passes the rotations only (zero translations): a body's
+// translation is interpolated with the non-rigid rest, so that pure
+// translation behaves as displacement interpolation.
 #pragma once
 
 #include "RigidFit.hpp"
