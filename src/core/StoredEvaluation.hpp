@@ -9,7 +9,10 @@
 //
 // Two sets are kept (the current one and the one before: a trial swap that
 // is undone, or a blend over the union of two sets, returns to it without a
-// rebuild). A set whose matrix would exceed the memory budget is not stored
+// rebuild). A set that differs from a stored one in a few centres (a swap,
+// a point added) is not rebuilt either: the stored matrix serves the
+// centres they share (weight zero for those the set no longer has) and the
+// few new centres' columns are computed alone, O(points) each (a patch). A set whose matrix would exceed the memory budget is not stored
 // (prepare() returns false): the caller evaluates on the fly instead.
 #pragma once
 #include "LinearPolynomial.hpp"
@@ -33,10 +36,14 @@ public:
     );
 
     //- Make the matrix of these centres current: reuse a stored one with the
-    //  same centres (same order), else build it, O(nnz), into the older
-    //  slot. False (nothing stored) if it would take more than budget bytes
-    //  together with the other slot's.
+    //  same centres (same order); else patch a stored one that differs in
+    //  at most maxPatchColumns centres either way; else build it, O(nnz),
+    //  into the older slot. False (nothing stored) if it would take more
+    //  than budget bytes together with the other slot's.
     bool prepare(const Points& centres, std::size_t budgetBytes);
+
+    //- At most this many new (and this many unused) centres in a patch
+    static constexpr int maxPatchColumns = 8;
 
     //- s(X) = K alpha + Q beta for the current centres (prepare() true)
     void evaluate(const Values& alpha, const Eigen::MatrixX3d& beta, Values& out) const;
@@ -46,6 +53,9 @@ public:
 
     //- Number of matrix builds so far
     int builds() const { return builds_; }
+
+    //- Columns computed alone for the current centres (0: no patch)
+    int patchColumns() const { return int(patch_.centre.size()); }
 
 private:
     struct Slot
@@ -60,9 +70,28 @@ private:
         std::size_t bytes() const;
     };
 
+    //- A stored matrix serving centres it mostly has
+    struct Patch
+    {
+        Points centres;                 // the centres served
+        int base = -1;                  // the slot, -1: no patch
+        std::vector<int> column;        // per centre: its slot column or -1
+        std::vector<int> centre;        // the centres without one, and
+        std::vector<std::vector<int>> rows;        // their columns alone
+        std::vector<std::vector<double>> values;
+        std::size_t bytes() const;
+    };
+
     //- Build the matrix of these centres into s; false (s emptied) if it
     //  would take more than budget bytes
     bool build(const Points& centres, std::size_t budget, Slot& s) const;
+
+    //- Patch slot k for these centres; false if they differ too much or
+    //  it would take more than budget bytes
+    bool patch(int k, const Points& centres, std::size_t budget);
+
+    //- out = K alpha for slot s
+    void product(const Slot& s, const Values& alpha, Values& out) const;
 
     RadialKernel kernel_;
     LinearPolynomial polynomial_;
@@ -70,6 +99,7 @@ private:
     Eigen::MatrixXd basis_;     // Q(x): points x polynomial size
     std::array<Slot, 2> slots_;
     int current_ = -1;
+    Patch patch_;
     int builds_ = 0;
 };
 

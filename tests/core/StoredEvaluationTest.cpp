@@ -56,15 +56,73 @@ TEST(StoredEvaluation, ReusesTheTwoLastSetsAndKeepsTheBudget)
     ASSERT_TRUE(s.prepare(a, budget));
     ASSERT_TRUE(s.prepare(a, budget));
     EXPECT_EQ(s.builds(), 1);
-    ASSERT_TRUE(s.prepare(b, budget));   // a trial
-    ASSERT_TRUE(s.prepare(a, budget));   // undone: the older slot
-    EXPECT_EQ(s.builds(), 2);
+    ASSERT_TRUE(s.prepare(b, budget));   // a trial: a patch of a
+    EXPECT_EQ(s.patchColumns(), 1);
+    ASSERT_TRUE(s.prepare(a, budget));   // undone: the stored set
+    EXPECT_EQ(s.patchColumns(), 0);
+    EXPECT_EQ(s.builds(), 1);
     EXPECT_GT(s.bytes(), 0u);
 
     // a budget below one matrix: nothing stored, the caller evaluates itself
     StoredEvaluation small(k, frame, x);
     EXPECT_FALSE(small.prepare(a, 64));
     EXPECT_EQ(small.bytes(), 0u);
+}
+
+// A set that differs from the stored one by swaps, additions or removals is
+// served by a patch (no rebuild) and evaluates as the evaluator does; more
+// changes than maxPatchColumns build the matrix.
+TEST_P(StoredCase, PatchedSetsEqualTheEvaluator)
+{
+    const auto [name, poly, dim] = GetParam();
+    const RadialKernel k = RadialKernel::fromName(name, test::testRadius(name, 0.4));
+    const LinearPolynomial frame(poly, dim);
+    const Points x = randomPoints(600, dim, 41);
+    const Points base = randomPoints(50, dim, 42);
+    const Points extra = randomPoints(20, dim, 43);
+    const std::size_t budget = std::size_t(1) << 30;
+    StoredEvaluation s(k, frame, x);
+    ASSERT_TRUE(s.prepare(base, budget));
+
+    const auto check = [&](const Points& c, int patchColumns, int builds, const char* what)
+    {
+        ASSERT_TRUE(s.prepare(c, budget)) << what;
+        EXPECT_EQ(s.patchColumns(), patchColumns) << what;
+        EXPECT_EQ(s.builds(), builds) << what;
+        Values alpha = test::smoothField(c);
+        Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+        if (dim == 2) { alpha.col(2).setZero(); }
+        RbfEvaluator e(k, frame);
+        e.assign(c, alpha, beta);
+        const Values expected = e.evaluate(x);
+        Values got;
+        s.evaluate(alpha, beta, got);
+        EXPECT_LT((got - expected).cwiseAbs().maxCoeff(), 1e-12*(1 + expected.cwiseAbs().maxCoeff()))
+            << what << ": " << name << " poly " << poly << " " << dim << "D";
+    };
+
+    Points swapped = base;                 // two swaps, the order changed too
+    swapped.row(3) = extra.row(0);
+    swapped.row(17) = extra.row(1);
+    swapped.row(0).swap(swapped.row(49));
+    check(swapped, 2, 1, "two swaps");
+
+    Points grown(base.rows() + 3, 3);      // three points added
+    grown << base, extra.topRows(3);
+    check(grown, 3, 1, "three added");
+
+    const Points shrunk = base.topRows(base.rows() - 5);   // five removed
+    check(shrunk, 0, 1, "five removed");
+
+    Points union_(base.rows() + 4, 3);     // a blend: old and new centres
+    union_ << swapped, extra.middleRows(2, 4);
+    check(union_, 6, 1, "union");
+
+    Points many = base;                    // too many: a build
+    many.topRows(StoredEvaluation::maxPatchColumns + 1) =
+        extra.topRows(StoredEvaluation::maxPatchColumns + 1);
+    check(many, 0, 2, "many swaps");
+    check(base, 0, 2, "back");
 }
 
 } // namespace
