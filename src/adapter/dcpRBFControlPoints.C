@@ -407,6 +407,7 @@ bool Foam::dcpRBFControlPoints::addNear
 
 void Foam::dcpRBFControlPoints::endStep()
 {
+    stepFrom_.reset();
     set_.nextStep();
     if (trialWait_ > 0)
     {

@@ -26,20 +26,16 @@ bool Foam::dcpRBFControlPoints::canTrial() const
 
 bool Foam::dcpRBFControlPoints::proposeSwap
 (
-    const dcpRBFQualityRegion::summary& q,
+    const dcpRBFQualityRegion::rankedCell& worst,
     const dcprbf::Values& d
 )
 {
-    if (q.worst.empty())
-    {
-        return false;
-    }
     // Joining: near the worst cell, among the joinNeighbours nearest
     // candidates, the one of largest error / distance
     static const int joinNeighbours = 8;
     const dcprbf::Values error(d - set_.evaluator().evaluate(boundary_.points()));
     const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
-    const Eigen::RowVector3d x(q.worst[0][1], q.worst[0][2], q.worst[0][3]);
+    const Eigen::RowVector3d x(worst[1], worst[2], worst[3]);
     const Eigen::Index in = set_.mostInaccurateNear(x, error, joinNeighbours, 1e-9*dMax);
     if (in < 0)
     {
@@ -89,36 +85,45 @@ Foam::label Foam::dcpRBFControlPoints::endTrials(const dcprbf::Values& d)
         return 0;
     }
     const label kept = nKept_;
+    nKept_ = 0;
     if (kept == 0)
     {
         // the set fits the motion: try again later, less often while it does
-        trialWait_ = trialBackoff_;
-        trialBackoff_ = min(2*trialBackoff_, maxTrialWait);
+        stepFrom_.reset();
+        backOff();
+        return 0;
     }
-    else
+    // stepFrom_ stays until endStep(): abandonSwaps() may need it
+    trialBackoff_ = 1;
+    if (settings_.selection().swapBlendSteps > 1)
     {
-        trialBackoff_ = 1;
-        if (settings_.selection().swapBlendSteps > 1)
-        {
-            blendFrom_ = std::move(stepFrom_);
-            blendStep_ = 1;
-            solve(d);
-        }
+        blendFrom_.reset(new dcprbf::DynamicControlSet::State(*stepFrom_));
+        blendStep_ = 1;
+        solve(d);
     }
-    stepFrom_.reset();
-    nKept_ = 0;
     return kept;
 }
 
 
-void Foam::dcpRBFControlPoints::abandonBlend(const dcprbf::Values& d)
+void Foam::dcpRBFControlPoints::abandonSwaps(const dcprbf::Values& d)
 {
-    set_.restore(*blendFrom_);
+    if (!stepFrom_)
+    {
+        return;
+    }
+    set_.restore(*stepFrom_);
+    stepFrom_.reset();
     blendFrom_.reset();
     updated_ = true;
+    backOff();
+    solve(d);
+}
+
+
+void Foam::dcpRBFControlPoints::backOff()
+{
     trialWait_ = trialBackoff_;
     trialBackoff_ = min(2*trialBackoff_, maxTrialWait);
-    solve(d);
 }
 
 // ************************************************************************* //

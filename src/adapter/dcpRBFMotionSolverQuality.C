@@ -11,6 +11,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFMotionSolver.H"
+#include "dcpRBFTrialWindow.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -32,60 +33,82 @@ void Foam::dcpRBFMotionSolver::trySwaps
     dcpRBFStepLog::record& r
 )
 {
-    if (!controlPoints_.canTrial())
+    if
+    (
+        !controlPoints_.canTrial()
+     || lastQuality_.worst.empty()
+     || lastQuality_.minQuality >= 1 - 1e-12
+    )
     {
         return;
     }
-    const dcpRBFQualityRegion::summary noSwap(lastQuality_);
+
+    // Trials judged on the worst cells alone (their minimum is the mesh's)
+    const label nWindow =
+        max(minTrialWindow, label(trialWindowFraction*lastQuality_.nCells));
+    const dcpRBFTrialWindow window
+    (
+        mesh(), region_.cells(), region_.centres(), lastQuality_.quality,
+        nWindow, points0(), settings_.metric()
+    );
+    dcpRBFQualityRegion::rankedCell worst(lastQuality_.worst[0]);
     const vectorField noSwapField(pointDisplacement_.primitiveField());
-    const pointField noSwapPoints(lastPoints_);
     const dcpRBFStepLog::record noSwapRecord(r);
 
-    // up to nSwap trials, each kept only if the minimum quality improves
+    // up to nSwap trials, each kept only if the window's minimum improves
     for (label trial = 0; trial < settings_.selection().nSwap; ++trial)
     {
-        const dcpRBFQualityRegion::summary q0(lastQuality_);
-        if (q0.minQuality >= 1 - 1e-12 || !controlPoints_.proposeSwap(q0, d))
+        if (worst[0] >= 1 - 1e-12 || !controlPoints_.proposeSwap(worst, d))
         {
             break;
         }
         const vectorField field0(pointDisplacement_.primitiveField());
-        const pointField points0Copy(lastPoints_);
-        const dcpRBFStepLog::record r0(r);
+        const scalar error0 = r.boundaryError;
         r.boundaryError = interpolateDisplacement(d);
-        measureQuality(r);
-        if (lastQuality_.minQuality > q0.minQuality)
+        pointField p(points0() + pointDisplacement_.primitiveField());
+        twoDCorrectPoints(p);
+        const dcpRBFQualityRegion::rankedCell w(window.worst(p));
+        if (w[0] > worst[0])
         {
             controlPoints_.keepSwap();
+            worst = w;
             continue;
         }
         controlPoints_.undoSwap(d);
         pointDisplacement_.primitiveFieldRef() = field0;
-        lastPoints_ = points0Copy;
-        lastQuality_ = q0;
-        r = r0;
+        r.boundaryError = error0;
         ++r.nUndone;
         break;
     }
     const label kept = controlPoints_.endTrials(d);
-    r.nAdded += kept;
-    r.nRemoved += kept;
-    if (kept && settings_.selection().swapBlendSteps > 1)
+    if (!kept)
     {
-        // the first blend step, not the whole swap: the mesh this step
-        // writes must be better than without the swaps too
-        r.boundaryError = interpolateDisplacement(d);
-        measureQuality(r);
-        if (!(lastQuality_.minQuality > noSwap.minQuality))
-        {
-            controlPoints_.abandonBlend(d);
-            pointDisplacement_.primitiveFieldRef() = noSwapField;
-            lastPoints_ = noSwapPoints;
-            lastQuality_ = noSwap;
-            r = noSwapRecord;
-            r.nUndone += kept;
-        }
+        return;    // the mesh without swaps, measured in lastQuality_
     }
+
+    // The mesh this step writes (with swapBlendSteps > 1 the blend's first
+    // step, not the whole swap), measured in full: better than without the
+    // swaps, or they are abandoned
+    dcpRBFQualityRegion::summary noSwap(std::move(lastQuality_));
+    pointField noSwapPoints(std::move(lastPoints_));
+    if (settings_.selection().swapBlendSteps > 1)
+    {
+        r.boundaryError = interpolateDisplacement(d);
+    }
+    measureQuality(r);
+    if (lastQuality_.minQuality > noSwap.minQuality)
+    {
+        r.nAdded += kept;
+        r.nRemoved += kept;
+        return;
+    }
+    controlPoints_.abandonSwaps(d);
+    pointDisplacement_.primitiveFieldRef() = noSwapField;
+    lastQuality_ = std::move(noSwap);
+    lastPoints_.transfer(noSwapPoints);
+    const label nUndone = r.nUndone;
+    r = noSwapRecord;
+    r.nUndone = nUndone + kept;
 }
 
 

@@ -77,7 +77,7 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     const label n
 ) const
 {
-    const scalarField q(quality(p));
+    scalarField q(quality(p));
 
     summary s;
     s.nCells = size();
@@ -121,6 +121,7 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
 
     s.worst = List<rankedCell>(worst.begin(), worst.begin() + min(n, label(worst.size())));
     s.best = List<rankedCell>(best.begin(), best.begin() + min(n, label(best.size())));
+    s.quality.transfer(q);
     return s;
 }
 
