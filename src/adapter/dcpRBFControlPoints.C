@@ -168,6 +168,8 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
     updated_(false),
     warnedMaxPoints_(false),
     nKept_(0),
+    leaving_(Eigen::RowVector3d::Zero()),
+    leavingReach_(0),
     blendStep_(0),
     trialWait_(0),
     trialBackoff_(1),

@@ -14,11 +14,11 @@ Description
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::dcpRBFControlPoints::canTrial() const
+bool Foam::dcpRBFControlPoints::canTrial(const bool rescue) const
 {
     const dcpRBFSelectionSettings& s = settings_.selection();
     return
-        ready_ && !blendFrom_ && trialWait_ == 0 && s.nSwap > 0
+        ready_ && !blendFrom_ && (rescue || trialWait_ == 0) && s.nSwap > 0
      && s.selection == dcpRBFSelectionSettings::mode::dynamic
      && s.swapRule == dcpRBFSelectionSettings::rule::errorGuided;
 }
@@ -27,7 +27,8 @@ bool Foam::dcpRBFControlPoints::canTrial() const
 bool Foam::dcpRBFControlPoints::proposeSwap
 (
     const dcpRBFQualityRegion::rankedCell& worst,
-    const dcprbf::Values& d
+    const dcprbf::Values& d,
+    const label skip
 )
 {
     // Joining: near the worst cell, among the joinNeighbours nearest
@@ -44,10 +45,27 @@ bool Foam::dcpRBFControlPoints::proposeSwap
 
     // Leaving: the moving control point whose removal costs least
     const dcprbf::DynamicControlSet::State before(set_.state());
+    label skipped = 0;
     for (const Eigen::Index out : set_.removalOrder(set_.leaveOneOutErrors(d)))
     {
+        if (skipped++ < skip)
+        {
+            continue;
+        }
         if (set_.swap(in, out))
         {
+            // where the interpolant loses a centre: its reach is the
+            // distance to the nearest remaining control point
+            leaving_ = boundary_.points().row(out);
+            leavingReach_ = GREAT;
+            for (const Eigen::Index j : set_.indices())
+            {
+                leavingReach_ = min
+                (
+                    leavingReach_,
+                    (boundary_.points().row(j) - leaving_).norm()
+                );
+            }
             if (!stepFrom_)
             {
                 stepFrom_.reset(new dcprbf::DynamicControlSet::State(before));
@@ -78,7 +96,11 @@ void Foam::dcpRBFControlPoints::undoSwap(const dcprbf::Values& d)
 }
 
 
-Foam::label Foam::dcpRBFControlPoints::endTrials(const dcprbf::Values& d)
+Foam::label Foam::dcpRBFControlPoints::endTrials
+(
+    const dcprbf::Values& d,
+    const bool blend
+)
 {
     if (!stepFrom_)
     {
@@ -95,7 +117,7 @@ Foam::label Foam::dcpRBFControlPoints::endTrials(const dcprbf::Values& d)
     }
     // stepFrom_ stays until endStep(): abandonSwaps() may need it
     trialBackoff_ = 1;
-    if (settings_.selection().swapBlendSteps > 1)
+    if (blend && settings_.selection().swapBlendSteps > 1)
     {
         blendFrom_.reset(new dcprbf::DynamicControlSet::State(*stepFrom_));
         blendStep_ = 1;

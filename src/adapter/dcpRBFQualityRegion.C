@@ -54,6 +54,15 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     cells_.transfer(cells);
     centres_.transfer(centres);
     quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
+    if (centres_.size())
+    {
+        dcprbf::Points c(centres_.size(), 3);
+        forAll(centres_, i)
+        {
+            c.row(i) << centres_[i][0], centres_[i][1], centres_[i][2];
+        }
+        tree_.reset(new dcprbf::PointTree(c));
+    }
 }
 
 
@@ -68,6 +77,27 @@ Foam::label Foam::dcpRBFQualityRegion::size() const
 Foam::scalarField Foam::dcpRBFQualityRegion::quality(const pointField& p) const
 {
     return quality_->compute(p);
+}
+
+
+Foam::labelList Foam::dcpRBFQualityRegion::within
+(
+    const Eigen::RowVector3d& x,
+    const scalar radius
+) const
+{
+    DynamicList<label> positions;
+    if (tree_ && tree_->size())
+    {
+        tree_->forEachWithin
+        (
+            x.data(), radius,
+            [&](std::size_t i, double) { positions.append(label(i)); }
+        );
+    }
+    labelList l(std::move(positions));
+    Foam::sort(l);
+    return l;
 }
 
 

@@ -9,6 +9,7 @@ License
 #include "dcpRBFTrialWindow.H"
 
 #include <algorithm>
+#include <iterator>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -52,45 +53,34 @@ Foam::labelList Foam::dcpRBFTrialWindow::lowest
 }
 
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::dcpRBFTrialWindow::dcpRBFTrialWindow
-(
-    const polyMesh& mesh,
-    const labelUList& regionCells,
-    const List<FixedList<scalar, 3>>& regionCentres,
-    const scalarField& q,
-    const label n,
-    const pointField& points0,
-    const dcprbf::TetQuality::Metric metric
-)
-:
-    indices_(lowest(q, n)),
-    cells_(labelUIndList(regionCells, indices_)),
-    centres_(UIndirectList<FixedList<scalar, 3>>(regionCentres, indices_)),
-    quality_(mesh, cells_, points0, metric)
-{}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::label Foam::dcpRBFTrialWindow::size() const
+void Foam::dcpRBFTrialWindow::build()
 {
-    return returnReduce(cells_.size(), sumOp<label>());
+    quality_.reset
+    (
+        new dcpRBFCellQuality
+        (
+            mesh_, labelList(labelUIndList(region_.cells(), positions_)),
+            points0_, metric_
+        )
+    );
 }
 
 
-Foam::dcpRBFQualityRegion::rankedCell
-Foam::dcpRBFTrialWindow::worst(const pointField& p) const
+Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::worstOf
+(
+    const dcpRBFCellQuality& quality,
+    const labelUList& positions,
+    const pointField& p
+) const
 {
     // none here: above every quality
-    const scalarField q(quality_.compute(p));
+    const scalarField q(quality.compute(p));
+    const List<FixedList<scalar, 3>>& centres = region_.centres();
     dcpRBFQualityRegion::rankedCell local({VGREAT, 0, 0, 0});
     forAll(q, i)
     {
-        const dcpRBFQualityRegion::rankedCell c
-        ({q[i], centres_[i][0], centres_[i][1], centres_[i][2]});
-        local = std::min(local, c);
+        const FixedList<scalar, 3>& c = centres[positions[i]];
+        local = std::min(local, dcpRBFQualityRegion::rankedCell({q[i], c[0], c[1], c[2]}));
     }
 
     List<dcpRBFQualityRegion::rankedCell> all(Pstream::nProcs());
@@ -107,6 +97,80 @@ Foam::dcpRBFTrialWindow::worst(const pointField& p) const
         w[0] = 1;
     }
     return w;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFTrialWindow::dcpRBFTrialWindow
+(
+    const polyMesh& mesh,
+    const dcpRBFQualityRegion& region,
+    const scalarField& q,
+    const label n,
+    const pointField& points0,
+    const dcprbf::TetQuality::Metric metric
+)
+:
+    mesh_(mesh),
+    region_(region),
+    points0_(points0),
+    metric_(metric),
+    positions_(lowest(q, n))
+{
+    build();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::dcpRBFTrialWindow::size() const
+{
+    return returnReduce(positions_.size(), sumOp<label>());
+}
+
+
+Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::add
+(
+    const Eigen::RowVector3d& x,
+    const scalar radius,
+    const pointField& p
+)
+{
+    const labelList near(region_.within(x, radius));
+    std::vector<label> added;
+    std::set_difference
+    (
+        near.begin(), near.end(), positions_.begin(), positions_.end(),
+        std::back_inserter(added)
+    );
+    const dcpRBFCellQuality addedQuality
+    (
+        mesh_, labelList(labelUIndList(region_.cells(), labelList(added.begin(), added.end()))), points0_, metric_
+    );
+    const dcpRBFQualityRegion::rankedCell w
+    (
+        worstOf(addedQuality, labelList(added.begin(), added.end()), p)
+    );
+    if (returnReduce(label(added.size()), sumOp<label>()))
+    {
+        labelList merged(positions_.size() + added.size());
+        std::merge
+        (
+            positions_.begin(), positions_.end(), added.begin(), added.end(),
+            merged.begin()
+        );
+        positions_.transfer(merged);
+        build();
+    }
+    return w;
+}
+
+
+Foam::dcpRBFQualityRegion::rankedCell
+Foam::dcpRBFTrialWindow::worst(const pointField& p) const
+{
+    return worstOf(quality_(), positions_, p);
 }
 
 // ************************************************************************* //
