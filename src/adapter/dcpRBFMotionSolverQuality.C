@@ -33,35 +33,57 @@ void Foam::dcpRBFMotionSolver::trySwaps
     dcpRBFStepLog::record& r
 )
 {
+    // Rescue: without swaps the mesh has inverted cells; the trials do not
+    // wait after fruitless ones, go on while they help (up to
+    // rescueSwapFactor nSwap) and the swaps apply at once (no blend: an
+    // inverted mesh has no smooth motion to keep)
+    const bool rescue = lastQuality_.nInverted > 0;
     if
     (
-        !controlPoints_.canTrial()
+        !controlPoints_.canTrial(rescue)
      || lastQuality_.worst.empty()
      || lastQuality_.minQuality >= 1 - 1e-12
     )
     {
         return;
     }
+    const label nTrials =
+        (rescue ? rescueSwapFactor : 1)*settings_.selection().nSwap;
 
-    // Trials judged on the worst cells alone (their minimum is the mesh's)
+    // Trials judged on the worst cells and those around the leaving points
     const label nWindow =
         max(minTrialWindow, label(trialWindowFraction*lastQuality_.nCells));
-    const dcpRBFTrialWindow window
+    dcpRBFTrialWindow window
     (
-        mesh(), region_.cells(), region_.centres(), lastQuality_.quality,
-        nWindow, points0(), settings_.metric()
+        mesh(), region_, lastQuality_.quality, nWindow, points0(),
+        settings_.metric()
     );
     dcpRBFQualityRegion::rankedCell worst(lastQuality_.worst[0]);
+    pointField current(lastPoints_);
     const vectorField noSwapField(pointDisplacement_.primitiveField());
     const dcpRBFStepLog::record noSwapRecord(r);
 
     // up to nSwap trials, each kept only if the window's minimum improves
-    for (label trial = 0; trial < settings_.selection().nSwap; ++trial)
+    label skip = 0;
+    for (label trial = 0; trial < nTrials; ++trial)
     {
-        if (worst[0] >= 1 - 1e-12 || !controlPoints_.proposeSwap(worst, d))
+        if
+        (
+            worst[0] >= 1 - 1e-12
+         || !controlPoints_.proposeSwap(worst, d, skip)
+        )
         {
             break;
         }
+        // the cells around the leaving point join the window, as they are
+        worst = std::min
+        (
+            worst,
+            window.add
+            (
+                controlPoints_.leaving(), controlPoints_.leavingReach(), current
+            )
+        );
         const vectorField field0(pointDisplacement_.primitiveField());
         const scalar error0 = r.boundaryError;
         r.boundaryError = interpolateDisplacement(d);
@@ -72,15 +94,21 @@ void Foam::dcpRBFMotionSolver::trySwaps
         {
             controlPoints_.keepSwap();
             worst = w;
+            current.transfer(p);
+            skip = 0;
             continue;
         }
         controlPoints_.undoSwap(d);
         pointDisplacement_.primitiveFieldRef() = field0;
         r.boundaryError = error0;
         ++r.nUndone;
-        break;
+        // rescue: the next leaving point instead, a few times
+        if (!rescue || ++skip >= rescueSkips)
+        {
+            break;
+        }
     }
-    const label kept = controlPoints_.endTrials(d);
+    const label kept = controlPoints_.endTrials(d, !rescue);
     if (!kept)
     {
         return;    // the mesh without swaps, measured in lastQuality_
@@ -91,7 +119,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
     // swaps, or they are abandoned
     dcpRBFQualityRegion::summary noSwap(std::move(lastQuality_));
     pointField noSwapPoints(std::move(lastPoints_));
-    if (settings_.selection().swapBlendSteps > 1)
+    if (!rescue && settings_.selection().swapBlendSteps > 1)
     {
         r.boundaryError = interpolateDisplacement(d);
     }
