@@ -357,6 +357,42 @@ INSTANTIATE_TEST_SUITE_P(Box, ErrorGuidedSwaps, ::testing::Values(16, 48),
         return "cells" + std::to_string(i.param) + "x" + std::to_string(i.param);
     });
 
+// Rescue: where the static set inverts cells, the trials go on (other
+// leaving points after an undone one) and apply at once, even with the
+// blend on (swapBlendSteps 4, nSwap 1): the mesh stays valid where full RBF's
+// is, and where the swaps were not needed the blend still phases them in
+TEST(ErrorGuidedRescue, KeepsTheMeshValidWhereTheStaticSetInverts)
+{
+    const std::string fixedN =
+        "tolerance 1e-12; minPoints 12; maxPoints 12; reselectTolerance 1e9;";
+    const label nSteps = 8, n = 48;
+    const std::vector<double> greedy
+    (
+        minQualityPerStep("selection greedy; " + fixedN, nSteps, nullptr, n)
+    );
+    const std::vector<double> all(minQualityPerStep("selection all;", nSteps, nullptr, n));
+    std::vector<std::vector<double>> rows;
+    const std::vector<double> dynamic
+    (
+        minQualityPerStep
+        (
+            "selection dynamic; nSwap 1; swapBlendSteps 4; " + fixedN, nSteps, &rows, n
+        )
+    );
+    label inverted = 0;
+    for (label s = 0; s < nSteps; ++s)
+    {
+        inverted += (greedy[s] <= 0);
+        if (all[s] > 0)
+        {
+            EXPECT_GT(dynamic[s], 0) << "step " << s + 1;
+        }
+        EXPECT_EQ(rows[s][cControl], 12) << "constant N";
+    }
+    EXPECT_GE(inverted, 3) << "the static set should invert cells here";
+}
+
+
 // A kept swap changes the interpolant; phased in over swapBlendSteps the
 // mesh velocity changes by a fraction of that jump per step. The bump grows
 // linearly: with a fixed set the points move at constant velocity, so the
