@@ -409,7 +409,12 @@ bool Foam::dcpRBFControlPoints::addNear
 
 void Foam::dcpRBFControlPoints::endStep()
 {
-    stepFrom_.reset();
+    if (stepFrom_)
+    {
+        // this step's swaps were kept
+        trialBackoff_ = 1;
+        stepFrom_.reset();
+    }
     set_.nextStep();
     if (trialWait_ > 0)
     {

@@ -115,8 +115,8 @@ Foam::label Foam::dcpRBFControlPoints::endTrials
         backOff();
         return 0;
     }
-    // stepFrom_ stays until endStep(): abandonSwaps() may need it
-    trialBackoff_ = 1;
+    // stepFrom_ stays until endStep() (the swaps confirmed: the back-off
+    // starts over) or abandonSwaps()
     if (blend && settings_.selection().swapBlendSteps > 1)
     {
         blendFrom_.reset(new dcprbf::DynamicControlSet::State(*stepFrom_));

@@ -81,7 +81,9 @@ void Foam::dcpRBFMotionSolver::trySwaps
             worst,
             window.add
             (
-                controlPoints_.leaving(), controlPoints_.leavingReach(), current
+                controlPoints_.leaving(),
+                leavingReachFraction*controlPoints_.leavingReach(),
+                current
             )
         );
         const vectorField field0(pointDisplacement_.primitiveField());

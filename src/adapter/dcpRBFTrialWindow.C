@@ -53,16 +53,24 @@ Foam::labelList Foam::dcpRBFTrialWindow::lowest
 }
 
 
-void Foam::dcpRBFTrialWindow::build()
+void Foam::dcpRBFTrialWindow::append(labelList&& positions)
 {
-    quality_.reset
+    labelList merged(positions_.size() + positions.size());
+    std::merge
+    (
+        positions_.begin(), positions_.end(), positions.begin(), positions.end(),
+        merged.begin()
+    );
+    positions_.transfer(merged);
+    scans_.append
     (
         new dcpRBFCellQuality
         (
-            mesh_, labelList(labelUIndList(region_.cells(), positions_)),
+            mesh_, labelList(labelUIndList(region_.cells(), positions)),
             points0_, metric_
         )
     );
+    chunks_.append(std::move(positions));
 }
 
 
@@ -115,10 +123,9 @@ Foam::dcpRBFTrialWindow::dcpRBFTrialWindow
     mesh_(mesh),
     region_(region),
     points0_(points0),
-    metric_(metric),
-    positions_(lowest(q, n))
+    metric_(metric)
 {
-    build();
+    append(lowest(q, n));
 }
 
 
@@ -144,33 +151,20 @@ Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::add
         near.begin(), near.end(), positions_.begin(), positions_.end(),
         std::back_inserter(added)
     );
-    const dcpRBFCellQuality addedQuality
-    (
-        mesh_, labelList(labelUIndList(region_.cells(), labelList(added.begin(), added.end()))), points0_, metric_
-    );
-    const dcpRBFQualityRegion::rankedCell w
-    (
-        worstOf(addedQuality, labelList(added.begin(), added.end()), p)
-    );
-    if (returnReduce(label(added.size()), sumOp<label>()))
-    {
-        labelList merged(positions_.size() + added.size());
-        std::merge
-        (
-            positions_.begin(), positions_.end(), added.begin(), added.end(),
-            merged.begin()
-        );
-        positions_.transfer(merged);
-        build();
-    }
-    return w;
+    append(labelList(added.begin(), added.end()));
+    return worstOf(scans_.last(), chunks_.last(), p);
 }
 
 
 Foam::dcpRBFQualityRegion::rankedCell
 Foam::dcpRBFTrialWindow::worst(const pointField& p) const
 {
-    return worstOf(quality_(), positions_, p);
+    dcpRBFQualityRegion::rankedCell w({1, 0, 0, 0});
+    forAll(scans_, i)
+    {
+        w = std::min(w, worstOf(scans_[i], chunks_[i], p));
+    }
+    return w;
 }
 
 // ************************************************************************* //
