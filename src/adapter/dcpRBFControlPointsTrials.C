@@ -18,7 +18,7 @@ bool Foam::dcpRBFControlPoints::canTrial(const bool rescue) const
 {
     const dcpRBFSelectionSettings& s = settings_.selection();
     return
-        ready_ && !blendFrom_ && (rescue || trialWait_ == 0) && s.nSwap > 0
+        ready_ && (rescue || (!blendFrom_ && trialWait_ == 0)) && s.nSwap > 0
      && s.selection == dcpRBFSelectionSettings::mode::dynamic
      && s.swapRule == dcpRBFSelectionSettings::rule::errorGuided;
 }
@@ -138,6 +138,31 @@ void Foam::dcpRBFControlPoints::abandonSwaps(const dcprbf::Values& d)
     blendFrom_.reset();
     updated_ = true;
     backOff();
+    solve(d);
+}
+
+
+Foam::dcpRBFControlPoints::blendState
+Foam::dcpRBFControlPoints::finishBlend(const dcprbf::Values& d)
+{
+    blendState b;
+    b.from = std::move(blendFrom_);
+    b.step = blendStep_;
+    updated_ = true;
+    solve(d);
+    return b;
+}
+
+
+void Foam::dcpRBFControlPoints::resumeBlend
+(
+    blendState&& b,
+    const dcprbf::Values& d
+)
+{
+    blendFrom_ = std::move(b.from);
+    blendStep_ = b.step;
+    updated_ = true;
     solve(d);
 }
 

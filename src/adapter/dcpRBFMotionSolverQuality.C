@@ -63,6 +63,19 @@ void Foam::dcpRBFMotionSolver::trySwaps
     const vectorField noSwapField(pointDisplacement_.primitiveField());
     const dcpRBFStepLog::record noSwapRecord(r);
 
+    // Rescue during a blend: the blend ends at once, the trials start from
+    // the new set's mesh (the blend is put back if nothing beats the mesh
+    // without swaps)
+    dcpRBFControlPoints::blendState blend;
+    if (rescue && controlPoints_.blending())
+    {
+        blend = controlPoints_.finishBlend(d);
+        r.boundaryError = interpolateDisplacement(d);
+        current = points0() + pointDisplacement_.primitiveField();
+        twoDCorrectPoints(current);
+        worst = window.worst(current);
+    }
+
     // up to nSwap trials, each kept only if the window's minimum improves
     label skip = 0;
     for (label trial = 0; trial < nTrials; ++trial)
@@ -111,7 +124,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
         }
     }
     const label kept = controlPoints_.endTrials(d, !rescue);
-    if (!kept)
+    if (!kept && !blend.from)
     {
         return;    // the mesh without swaps, measured in lastQuality_
     }
@@ -133,6 +146,10 @@ void Foam::dcpRBFMotionSolver::trySwaps
         return;
     }
     controlPoints_.abandonSwaps(d);
+    if (blend.from)
+    {
+        controlPoints_.resumeBlend(std::move(blend), d);
+    }
     pointDisplacement_.primitiveFieldRef() = noSwapField;
     lastQuality_ = std::move(noSwap);
     lastPoints_.transfer(noSwapPoints);

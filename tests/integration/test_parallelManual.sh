@@ -185,3 +185,24 @@ test_parallelManual_cube3D_staticLid_equalsSerial() {
     bentBodyPointDisplacement '"(outer|lid)"'
     everySelectionParallelEqualsSerial 0.5 "movingPatches (body); staticPatches (outer lid); supportRadius 1.5;"
 }
+
+# The error-guided rule's trials in parallel: a fixed set of 5 points without
+# boundary correction on the bent wing, in steps of 0.025, so that the trials
+# (judged on a window of cells spread over both processors: the worst cells
+# and those around the leaving points) run at many steps, and at the last,
+# whose mesh folds, the rescue (trials past an undone one). Parallel equals
+# serial, and the serial run made trials at an inverted step (a row of
+# dcpRBF.dat with minQuality <= 0 and nUndone >= 2)
+test_parallelManual_airfoil2D_bendingWing_dcpTrials_equalsSerial() {
+    bendingWingCase || return 1
+    foamDictionary system/controlDict -entry deltaT -set 0.025 > /dev/null
+    foamDictionary system/controlDict -entry writeInterval -set 4 > /dev/null
+    dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom);
+        supportRadius 2.5; boundaryCorrection false; guardIterations 0;
+        controlPoints { selection dynamic; tolerance 1e-12; minPoints 5; maxPoints 5;
+            reselectTolerance 1e9; }"
+    parallelEqualsSerial 0.5 "$manualDecompositionDict" || return 1
+    awk '!/^#/ && $7 <= 0 && $15 >= 2 { n++ } END { exit !(n > 0) }' \
+        postProcessing/dcpRBF/0/dcpRBF.dat \
+        || fail "no trials at an inverted step in the serial run (dcpRBF.dat: no row with minQuality <= 0 and nUndone >= 2)"
+}
