@@ -49,6 +49,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
     }
     const label nTrials =
         (rescue ? rescueSwapFactor : 1)*settings_.selection().nSwap;
+    r.rescue = rescue;
 
     // Trials judged on the worst cells and those around the leaving points
     const label nWindow =
@@ -156,6 +157,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
     const label nUndone = r.nUndone;
     r = noSwapRecord;
     r.nUndone = nUndone + kept;
+    r.rescue = rescue;
 }
 
 
@@ -182,20 +184,30 @@ void Foam::dcpRBFMotionSolver::guardQuality
         )
         {
             const word t(mesh().time().timeName());
+            const label maxN = settings_.selection().maxPoints;
+            const string why
+            (
+                controlPoints_.size() >= maxN
+              ? " (the set is at maxPoints " + Foam::name(maxN)
+                + ": no point can join; raise maxPoints)"
+              : iter >= settings_.guardIterations()
+              ? " (guardIterations " + Foam::name(settings_.guardIterations()) + ")"
+              : ""
+            );
             if (settings_.onFloorFailure() == dcpRBFSettings::floorAction::stop)
             {
                 FatalErrorInFunction
                     << "Time " << t << ": minimum cell quality " << q.minQuality
                     << " below qualityFloor " << floor << " after " << iter
-                    << " guard additions (" << q.nInverted << " inverted"
-                    << " cells). Stopping (qualityFloorAction stop)."
+                    << " guard additions" << why.c_str() << " (" << q.nInverted
+                    << " inverted cells). Stopping (qualityFloorAction stop)."
                     << exit(FatalError);
             }
             WarningInFunction
                 << "Time " << t << ": minimum cell quality " << q.minQuality
                 << " below qualityFloor " << floor << " after " << iter
-                << " guard additions; continuing (qualityFloorAction warn)"
-                << endl;
+                << " guard additions" << why.c_str()
+                << "; continuing (qualityFloorAction warn)" << endl;
             break;
         }
         ++r.nGuard;

@@ -79,9 +79,13 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
         {
             if (k != "selection" && dict.found(k))
             {
+                const bool dynamicOnly =
+                    k == "nSwap" || k == "protectSteps" || k == "swapRule"
+                 || k == "swapBlendSteps";
                 FatalIOErrorInFunction(dict)
                     << "Keyword " << k << " has no effect with selection all."
-                    << " Allowed selections using it: greedy, dynamic"
+                    << " Allowed selections using it: "
+                    << (dynamicOnly ? "dynamic" : "greedy, dynamic")
                     << exit(FatalIOError);
             }
         }

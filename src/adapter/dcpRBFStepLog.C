@@ -24,7 +24,8 @@ void Foam::dcpRBFStepLog::write(const record& r)
 {
     Info<< "dcpRBF: control points " << r.nControl << " (+" << r.nAdded
         << " -" << r.nRemoved << ", guard +" << r.nGuard
-        << (r.nUndone ? ", trial swap undone" : "") << "), quality min "
+        << (r.nUndone ? ", " + Foam::name(r.nUndone) + " trial swap(s) undone" : word())
+        << (r.rescue ? ", rescue" : "") << "), quality min "
         << r.minQuality << " mean " << r.meanQuality << " (" << r.nCells
         << " cells in reach), boundary error " << r.boundaryError
         << (r.atMaxPoints ? " (at maxPoints)" : "")
