@@ -23,9 +23,12 @@ Foam::dcpRBFStepLog::dcpRBFStepLog(const Time& runTime)
 void Foam::dcpRBFStepLog::write(const record& r)
 {
     Info<< "dcpRBF: control points " << r.nControl << " (+" << r.nAdded
-        << " -" << r.nRemoved << ", guard +" << r.nGuard
-        << (r.nUndone ? ", " + Foam::name(r.nUndone) + " trial swap(s) undone" : word())
-        << (r.rescue ? ", rescue" : "") << "), quality min "
+        << " -" << r.nRemoved << ", guard +" << r.nGuard;
+    if (r.nUndone)
+    {
+        Info<< ", " << r.nUndone << " trial swap(s) undone";
+    }
+    Info<< (r.rescue ? ", rescue" : "") << "), quality min "
         << r.minQuality << " mean " << r.meanQuality << " (" << r.nCells
         << " cells in reach), boundary error " << r.boundaryError
         << (r.atMaxPoints ? " (at maxPoints)" : "")

@@ -204,5 +204,13 @@ test_parallelManual_airfoil2D_bendingWing_dcpTrials_equalsSerial() {
     parallelEqualsSerial 0.5 "$manualDecompositionDict" || return 1
     awk '!/^#/ && $7 <= 0 && $15 >= 2 { n++ } END { exit !(n > 0) }' \
         postProcessing/dcpRBF/0/dcpRBF.dat \
-        || fail "no trials at an inverted step in the serial run (dcpRBF.dat: no row with minQuality <= 0 and nUndone >= 2)"
+        || fail "no trials at an inverted step in the serial run (dcpRBF.dat: no row with minQuality <= 0 and nUndone >= 2)" \
+        || return 1
+    # the log lines as the README shows them, the trials' and the rescue's tags included
+    grep -q ', rescue), quality min' log.moveDynamicMesh || fail "no ', rescue' in the log" || return 1
+    local bad
+    bad=$(grep '^dcpRBF: control points' log.moveDynamicMesh \
+        | grep -v -E '^dcpRBF: control points [0-9]+ \(\+[0-9]+ -[0-9]+, guard \+[0-9]+(, [0-9]+ trial swap\(s\) undone)?(, rescue)?\), quality min ' \
+        | head -n 1)
+    [ -z "$bad" ] || fail "a log line not as documented: ${bad:0:120}"
 }
