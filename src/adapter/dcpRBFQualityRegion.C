@@ -54,15 +54,6 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     cells_.transfer(cells);
     centres_.transfer(centres);
     quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
-    if (centres_.size())
-    {
-        dcprbf::Points c(centres_.size(), 3);
-        forAll(centres_, i)
-        {
-            c.row(i) << centres_[i][0], centres_[i][1], centres_[i][2];
-        }
-        tree_.reset(new dcprbf::PointTree(c));
-    }
 }
 
 
@@ -87,6 +78,15 @@ Foam::labelList Foam::dcpRBFQualityRegion::within
 ) const
 {
     DynamicList<label> positions;
+    if (!tree_ && centres_.size())
+    {
+        dcprbf::Points c(centres_.size(), 3);
+        forAll(centres_, i)
+        {
+            c.row(i) << centres_[i][0], centres_[i][1], centres_[i][2];
+        }
+        tree_.reset(new dcprbf::PointTree(c));
+    }
     if (tree_ && tree_->size())
     {
         tree_->forEachWithin
