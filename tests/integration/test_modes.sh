@@ -118,3 +118,16 @@ test_dcpRBFFvMesh_writesCellQuality() {
     grep -q "cell quality min 1 mean 1, 0 inverted" log.moveDynamicMesh || fail "initial quality not 1"
     tail -n 5 log.moveDynamicMesh | grep -q "End" || fail "did not end"
 }
+
+# The guard cannot add a point to a set at maxPoints: the error says so and
+# names the keyword to raise (not only "after 0 guard additions")
+test_qualityFloorStop_atMaxPointsNamesIt() {
+    modeRun3D "selection greedy; tolerance 1e-2;" || return 1
+    dynamicMeshDict "$(cubeCoeffs "selection greedy; tolerance 1e-12; minPoints 8; maxPoints 8; reselectTolerance 1e9;") qualityFloor 0.99; qualityFloorAction stop;"
+    if moveDynamicMesh > log.moveDynamicMesh 2>&1
+    then
+        fail "moveDynamicMesh went on below the quality floor"
+    fi
+    grep -q "after 0 guard additions (the set is at maxPoints 8: no point can join; raise maxPoints)" \
+        log.moveDynamicMesh || fail "error does not say the set is at maxPoints: $(grep -m1 -A1 'FOAM FATAL' log.moveDynamicMesh | tail -n 1)"
+}
