@@ -17,8 +17,7 @@ Description
 
 void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
 {
-    lastPoints_ = points0() + pointDisplacement_.primitiveField();
-    twoDCorrectPoints(lastPoints_);
+    lastPoints_ = curPoints();
     lastQuality_ =
         region_.measure(lastPoints_, max(label(1), settings_.selection().nSwap));
     r.nCells = lastQuality_.nCells;
@@ -72,8 +71,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
     {
         blend = controlPoints_.finishBlend(d);
         r.boundaryError = interpolateDisplacement(d);
-        current = points0() + pointDisplacement_.primitiveField();
-        twoDCorrectPoints(current);
+        current = curPoints();
         worst = window.worst(current);
     }
 
@@ -103,8 +101,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
         const vectorField field0(pointDisplacement_.primitiveField());
         const scalar error0 = r.boundaryError;
         r.boundaryError = interpolateDisplacement(d);
-        pointField p(points0() + pointDisplacement_.primitiveField());
-        twoDCorrectPoints(p);
+        pointField p(curPoints());
         const dcpRBFQualityRegion::rankedCell w(window.worst(p));
         if (w[0] > worst[0])
         {

@@ -74,7 +74,7 @@ void Foam::dcpRBFTrialWindow::append(labelList&& positions)
 }
 
 
-Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::worstOf
+Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::localWorst
 (
     const dcpRBFCellQuality& quality,
     const labelUList& positions,
@@ -84,13 +84,21 @@ Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::worstOf
     // none here: above every quality
     const scalarField q(quality.compute(p));
     const List<FixedList<scalar, 3>>& centres = region_.centres();
-    dcpRBFQualityRegion::rankedCell local({VGREAT, 0, 0, 0});
+    dcpRBFQualityRegion::rankedCell w({VGREAT, 0, 0, 0});
     forAll(q, i)
     {
         const FixedList<scalar, 3>& c = centres[positions[i]];
-        local = std::min(local, dcpRBFQualityRegion::rankedCell({q[i], c[0], c[1], c[2]}));
+        w = std::min(w, dcpRBFQualityRegion::rankedCell({q[i], c[0], c[1], c[2]}));
     }
+    return w;
+}
 
+
+Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::globalWorst
+(
+    const dcpRBFQualityRegion::rankedCell& local
+)
+{
     List<dcpRBFQualityRegion::rankedCell> all(Pstream::nProcs());
     all[Pstream::myProcNo()] = local;
     Pstream::gatherList(all);
@@ -152,19 +160,20 @@ Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::add
         std::back_inserter(added)
     );
     append(labelList(added.begin(), added.end()));
-    return worstOf(scans_.last(), chunks_.last(), p);
+    return globalWorst(localWorst(scans_.last(), chunks_.last(), p));
 }
 
 
 Foam::dcpRBFQualityRegion::rankedCell
 Foam::dcpRBFTrialWindow::worst(const pointField& p) const
 {
-    dcpRBFQualityRegion::rankedCell w({1, 0, 0, 0});
+    // every chunk here, then one exchange
+    dcpRBFQualityRegion::rankedCell w({VGREAT, 0, 0, 0});
     forAll(scans_, i)
     {
-        w = std::min(w, worstOf(scans_[i], chunks_[i], p));
+        w = std::min(w, localWorst(scans_[i], chunks_[i], p));
     }
-    return w;
+    return globalWorst(w);
 }
 
 // ************************************************************************* //

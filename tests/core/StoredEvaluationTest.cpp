@@ -17,6 +17,29 @@ namespace
 
 class StoredCase : public ::testing::TestWithParam<test::KernelCase> {};
 
+//- Largest difference, relative, between the stored product of s for the
+//  centres c (prepared) and the evaluator on the points x, for smooth weights
+double storedVsEvaluator
+(
+    const StoredEvaluation& s,
+    const RadialKernel& k,
+    const LinearPolynomial& frame,
+    const Points& x,
+    const Points& c,
+    int dim
+)
+{
+    Values alpha = test::smoothField(c);
+    Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+    if (dim == 2) { alpha.col(2).setZero(); }
+    RbfEvaluator e(k, frame);
+    e.assign(c, alpha, beta);
+    const Values expected = e.evaluate(x);
+    Values got;
+    s.evaluate(alpha, beta, got);
+    return (got - expected).cwiseAbs().maxCoeff()/(1 + expected.cwiseAbs().maxCoeff());
+}
+
 TEST_P(StoredCase, EqualsTheEvaluator)
 {
     const auto [name, poly, dim] = GetParam();
@@ -24,19 +47,9 @@ TEST_P(StoredCase, EqualsTheEvaluator)
     const LinearPolynomial frame(poly, dim);
     const Points x = randomPoints(700, dim, 31);
     const Points c = randomPoints(60, dim, 32);
-    Values alpha = test::smoothField(c);
-    Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
-    if (dim == 2) { alpha.col(2).setZero(); }
-
-    RbfEvaluator e(k, frame);
-    e.assign(c, alpha, beta);
-    const Values expected = e.evaluate(x);
-
     StoredEvaluation s(k, frame, x);
     ASSERT_TRUE(s.prepare(c, std::size_t(1) << 30));
-    Values got;
-    s.evaluate(alpha, beta, got);
-    EXPECT_LT((got - expected).cwiseAbs().maxCoeff(), 1e-12*(1 + expected.cwiseAbs().maxCoeff()))
+    EXPECT_LT(storedVsEvaluator(s, k, frame, x, c, dim), 1e-12)
         << name << " poly " << poly << " " << dim << "D";
 }
 
@@ -89,15 +102,7 @@ TEST_P(StoredCase, PatchedSetsEqualTheEvaluator)
         ASSERT_TRUE(s.prepare(c, budget)) << what;
         EXPECT_EQ(s.patchColumns(), patchColumns) << what;
         EXPECT_EQ(s.builds(), builds) << what;
-        Values alpha = test::smoothField(c);
-        Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
-        if (dim == 2) { alpha.col(2).setZero(); }
-        RbfEvaluator e(k, frame);
-        e.assign(c, alpha, beta);
-        const Values expected = e.evaluate(x);
-        Values got;
-        s.evaluate(alpha, beta, got);
-        EXPECT_LT((got - expected).cwiseAbs().maxCoeff(), 1e-12*(1 + expected.cwiseAbs().maxCoeff()))
+        EXPECT_LT(storedVsEvaluator(s, k, frame, x, c, dim), 1e-12)
             << what << ": " << name << " poly " << poly << " " << dim << "D";
     };
 
