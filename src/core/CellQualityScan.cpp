@@ -4,22 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace dcprbf
 {
-
-namespace
-{
-
-//- Keys ranked in place of the quality: where q^6 neither underflows nor
-//  overflows (outside, the quality itself is compared)
-constexpr double keyFloor = 1e-250;
-constexpr double keyCeiling = 1e250;
-
-} // namespace
-
 
 CellQualityScan::CellQualityScan
 (
@@ -126,6 +114,30 @@ CellQualityScan::CellQualityScan
 }
 
 
+bool CellQualityScan::tetVertices(const std::size_t k0, int v[4]) const
+{
+    // four triangles: the first face's points and the one point of the
+    // second face that is not among them
+    for (std::size_t k = k0; k < k0 + 4; ++k)
+    {
+        const int f = cellFaces_[k];
+        if (faceStart_[f + 1] - faceStart_[f] != 3) return false;
+    }
+    const int* a = &facePoints_[faceStart_[cellFaces_[k0]]];
+    const int* b = &facePoints_[faceStart_[cellFaces_[k0 + 1]]];
+    v[0] = a[0]; v[1] = a[1]; v[2] = a[2];
+    for (int j = 0; j < 3; ++j)
+    {
+        if (b[j] != a[0] && b[j] != a[1] && b[j] != a[2])
+        {
+            v[3] = b[j];
+            return true;
+        }
+    }
+    return false;
+}
+
+
 double CellQualityScan::cellQuality
 (
     const std::size_t i,
@@ -135,6 +147,24 @@ double CellQualityScan::cellQuality
 ) const
 {
     const std::size_t k0 = cellStart_[i], k1 = cellStart_[i + 1];
+    if (k1 - k0 == 4)
+    {
+        int v[4];
+        if (tetVertices(k0, v))
+        {
+            // Every tetrahedron of the decomposition is an affine image of
+            // the cell's (its centres are fixed combinations of the cell's
+            // vertices): each has the cell's own A. One measure.
+            const double* x0 = points0_.data();
+            double J, a2;
+            TetMeasures::measures
+            (
+                x0 + 3*v[0], x0 + 3*v[1], x0 + 3*v[2], x0 + 3*v[3],
+                x + 3*v[0], x + 3*v[1], x + 3*v[2], x + 3*v[3], J, a2
+            );
+            return TetMeasures::quality(J, a2, metric_);
+        }
+    }
     buf.resize(3*(k1 - k0));
     double cc[3] = {0, 0, 0};
     for (std::size_t k = k0; k < k1; ++k)
@@ -165,8 +195,7 @@ double CellQualityScan::cellQuality
     // quality.
     const double* cc0 = &cellCentres0_[3*i];
     const double* x0 = points0_.data();
-    double qOther = std::numeric_limits<double>::max();
-    double bestKey = std::numeric_limits<double>::max(), bestJ = 1, bestA2 = 3;
+    TetMeasures::Worst worst(metric_);
     for (std::size_t k = k0; k < k1; ++k)
     {
         const int fi = cellFaces_[k];
@@ -223,24 +252,10 @@ double CellQualityScan::cellQuality
                 }
                 a2 /= det0*det0;
             }
-            const double key = (J > 0 && a2 > 0) ? TetMeasures::rankKey(J, a2, metric_) : 0;
-            if (key > keyFloor && key < keyCeiling)
-            {
-                if (key < bestKey)
-                {
-                    bestKey = key;
-                    bestJ = J;
-                    bestA2 = a2;
-                }
-            }
-            else
-            {
-                qOther = std::min(qOther, TetMeasures::quality(J, a2, metric_));
-            }
+            worst.add(J, a2);
         }
     }
-    return std::min(qOther, bestKey < std::numeric_limits<double>::max()
-        ? TetMeasures::quality(bestJ, bestA2, metric_) : qOther);
+    return worst.quality();
 }
 
 

@@ -6,7 +6,9 @@
 // split into tetrahedra (cell centre, face centre, each edge of each face);
 // the face centre is the average of the face's points, the cell centre the
 // average of its face centres; the cell's quality is the minimum over its
-// tetrahedra. The reference centres are computed once at construction
+// tetrahedra. A tetrahedral cell is measured once, as itself: each of its
+// decomposition's tetrahedra is an affine image of it (its centres are fixed
+// combinations of its vertices), so each has its A (equal to round-off). The reference centres are computed once at construction
 // (from the reference points), the topology is stored flat (compressed
 // rows, each cell's faces with the cell, the points renumbered in the order
 // the cells use them), and a measurement gathers the current points once
@@ -68,6 +70,10 @@ private:
     //  cell centres (x y z)
     std::vector<double> faceCentres0_;
     std::vector<double> cellCentres0_;
+
+    //- Is the cell whose faces start at entry k0 (four of them) a
+    //  tetrahedron (four triangles)? Its vertices into v
+    bool tetVertices(std::size_t k0, int v[4]) const;
 
     //- Quality of cell i for the compact current points x (buf,
     //  pointBuf: scratch space)

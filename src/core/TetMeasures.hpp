@@ -115,6 +115,47 @@ struct TetMeasures
         }
     }
 
+    //- The worst of a cell's tetrahedra, from their J and |A|_F^2: ranked by
+    //  rankKey where it neither underflows nor overflows, else (inverted,
+    //  degenerate, extreme) by the quality itself; quality() takes one cbrt
+    class Worst
+    {
+        TetQuality::Metric metric_;
+        double qOther_ = 1e308, bestKey_ = 1e308, bestJ_ = 1, bestA2_ = 3;
+        bool keyed_ = false;
+
+
+    public:
+        explicit Worst(TetQuality::Metric metric) : metric_(metric) {}
+
+        inline void add(const double J, const double a2)
+        {
+            const double key = (J > 0 && a2 > 0) ? rankKey(J, a2, metric_) : 0;
+            if (key > 1e-250 && key < 1e250)
+            {
+                if (key < bestKey_)
+                {
+                    bestKey_ = key;
+                    bestJ_ = J;
+                    bestA2_ = a2;
+                    keyed_ = true;
+                }
+            }
+            else
+            {
+                qOther_ = std::min(qOther_, TetMeasures::quality(J, a2, metric_));
+            }
+        }
+
+        //- The worst quality added (1e308 if none)
+        inline double quality() const
+        {
+            return keyed_
+                ? std::min(qOther_, TetMeasures::quality(bestJ_, bestA2_, metric_))
+                : qOther_;
+        }
+    };
+
     static inline double tetQuality
     (
         const double* r0, const double* r1, const double* r2, const double* r3,

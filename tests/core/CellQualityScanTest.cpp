@@ -26,7 +26,9 @@ struct HexBlock
     std::vector<std::size_t> cellStart{0}, faceStart{0};
     std::vector<int> cellFaces, facePoints;
 
-    explicit HexBlock(int nn) : n(nn)
+    //- tets: each cube as the six tetrahedra around its diagonal (Kuhn),
+    //  each tetrahedron its four triangles
+    explicit HexBlock(int nn, bool tets = false) : n(nn)
     {
         for (int k = 0; k <= n; ++k)
             for (int j = 0; j <= n; ++j)
@@ -39,6 +41,11 @@ struct HexBlock
             for (int j = 0; j < n; ++j)
                 for (int i = 0; i < n; ++i)
                 {
+                    if (tets)
+                    {
+                        addKuhnTets(id, i, j, k);
+                        continue;
+                    }
                     const int v[8] =
                     {
                         id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
@@ -57,6 +64,28 @@ struct HexBlock
                     }
                     cellStart.push_back(cellFaces.size());
                 }
+    }
+
+    template<class Id>
+    void addKuhnTets(const Id& id, int i, int j, int k)
+    {
+        const auto corner = [&](int bits)
+        {
+            return id(i + (bits & 1), j + ((bits >> 1) & 1), k + ((bits >> 2) & 1));
+        };
+        const int axes[6][3] = {{1, 2, 4}, {1, 4, 2}, {2, 1, 4}, {2, 4, 1}, {4, 1, 2}, {4, 2, 1}};
+        for (const auto& a : axes)
+        {
+            const int t[4] = {corner(0), corner(a[0]), corner(a[0] | a[1]), corner(7)};
+            const int f[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+            for (const auto& face : f)
+            {
+                for (const int c : face) facePoints.push_back(t[c]);
+                faceStart.push_back(facePoints.size());
+                cellFaces.push_back(int(faceStart.size()) - 2);
+            }
+            cellStart.push_back(cellFaces.size());
+        }
     }
 
     // The reference: TetQuality::compute on the decomposition
@@ -174,6 +203,32 @@ TEST(CellQualityScan, CellsEqualTheReferenceDecompositionIncludingInverted)
         }
         EXPECT_GT(nInverted, 0);
         EXPECT_LT(nInverted, 216);
+    }
+}
+
+
+TEST(CellQualityScan, TetrahedralCellsMeasuredAsThemselvesEqualTheDecomposition)
+{
+    // 6 x 6^3 Kuhn tetrahedra, some inverted: the one measure per cell
+    // equals the minimum over its twelve decomposition tetrahedra
+    const HexBlock b(6, true);
+    const std::vector<double> p(deformed(b.points, 0.3, 5));
+    for (const auto m : {TetQuality::Metric::sizeShape, TetQuality::Metric::size,
+                         TetQuality::Metric::shape})
+    {
+        const CellQualityScan scan(b.scan(m));
+        ASSERT_EQ(scan.size(), 6u*216u);
+        std::vector<double> q(scan.size());
+        scan.measure(p.data(), q.data());
+        int nInverted = 0;
+        for (std::size_t c = 0; c < q.size(); ++c)
+        {
+            const double ref = b.reference(c, p, m);
+            EXPECT_NEAR(q[c], ref, 1e-10*std::max(1.0, std::abs(ref))) << c;
+            nInverted += (ref <= 0);
+        }
+        EXPECT_GT(nInverted, 0);
+        EXPECT_LT(nInverted, int(q.size()));
     }
 }
 

@@ -1,0 +1,69 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+// dcpRBF numerical core: the quality (TetQuality) of the cells of a 2D mesh
+// (one cell thick, extruded) from one polygon per cell.
+//
+// A prism cell extruded from a polygon, moved in the plane (both caps by the
+// same in-plane displacement, the extrusion coordinate fixed): every
+// tetrahedron of CellQualityScan's decomposition (cell centre, face centre,
+// edge) has A = diag(F, 1), with F the 2 x 2 map of one of the polygon's
+// triangles (vertex average, edge) from the reference to the current
+// polygon. So the cell's quality is the minimum over the polygon's n
+// triangles of the tetrahedron quality with J = det F and |A|^2 = |F|^2 + 1:
+// the value of CellQualityScan on the prism (equal to round-off), from n
+// 2 x 2 maps instead of 6n tetrahedra (a quadrilateral: 4 instead of 24).
+//
+// Every cell's value depends only on its own points: a measurement with any
+// number of OpenMP threads gives bit-identical values.
+#pragma once
+
+#include "TetQuality.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace dcprbf
+{
+
+class PlanarCellQualityScan
+{
+public:
+    //- Polygons as compressed rows: cell i's polygon has the points
+    //  polygonPoints[polygonStart[i] .. polygonStart[i+1]) in order around
+    //  it (either direction); points0: the reference points, x y z per
+    //  point; axis0, axis1: the in-plane components (0, 1 or 2)
+    PlanarCellQualityScan
+    (
+        std::vector<std::size_t> polygonStart,
+        std::vector<int> polygonPoints,
+        const double* points0,
+        int axis0,
+        int axis1,
+        TetQuality::Metric metric = TetQuality::Metric::sizeShape
+    );
+
+    //- Number of cells
+    std::size_t size() const { return polygonStart_.size() - 1; }
+
+    //- Quality of every cell for the points p (x y z per point, indexed
+    //  as the reference points) into q
+    void measure(const double* p, double* q) const;
+
+private:
+    std::vector<std::size_t> polygonStart_;
+
+    //- Indices into pointIds_ (the points renumbered in order of use)
+    std::vector<int> polygonPoints_;
+    std::vector<int> pointIds_;
+    int axis0_, axis1_;
+    TetQuality::Metric metric_;
+
+    //- Reference in-plane coordinates of the points used (2 per point),
+    //  each polygon's reference vertex average (2 per polygon)
+    std::vector<double> points0_;
+    std::vector<double> centres0_;
+
+    //- Quality of cell i for the compact current in-plane points x
+    double cellQuality(std::size_t i, const double* x) const;
+};
+
+} // namespace dcprbf
