@@ -7,6 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFCellQuality.H"
+#include "dcpRBFPlanarCells.H"
 #include "TetQuality.hpp"
 
 namespace
@@ -28,7 +29,8 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
 )
 :
     mesh_(mesh),
-    metric_(metric)
+    metric_(metric),
+    nCells_(0)
 {}
 
 
@@ -41,14 +43,30 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
 )
 :
     mesh_(mesh),
-    metric_(metric)
+    metric_(metric),
+    nCells_(cells.size())
 {
-    // The cells' faces, each once, numbered in order of appearance
+    dcpRBFPlanarCells sorted(mesh, cells, points0);
+    if (sorted.planar().size())
+    {
+        planar_ = sorted.planar();
+        planarScan_.reset
+        (
+            new dcprbf::PlanarCellQualityScan
+            (
+                std::move(sorted.polygonStart()), std::move(sorted.polygonPoints()),
+                xyz(points0), sorted.axis0(), sorted.axis1(), metric
+            )
+        );
+    }
+    scanned_ = sorted.others();
+
+    // The other cells' faces, each once, numbered in order of appearance
     const faceList& faces = mesh.faces();
     labelList compact(faces.size(), -1);
     std::vector<std::size_t> cellStart(1, 0), faceStart(1, 0);
     std::vector<int> cellFaces, facePoints;
-    for (const label celli : cells)
+    for (const label celli : labelUIndList(cells, scanned_))
     {
         for (const label facei : mesh.cells()[celli])
         {
@@ -167,10 +185,24 @@ Foam::scalarField Foam::dcpRBFCellQuality::compute(const pointField& p) const
         FatalErrorInFunction
             << "No cells given at construction" << abort(FatalError);
     }
-    scalarField q(label(scan_->size()));
-    if (q.size())
+    scalarField q(nCells_);
+    const auto measure = [&](const auto& scan, const labelList& positions)
     {
-        scan_->measure(xyz(p), q.data());
+        if (positions.size() == q.size())
+        {
+            scan.measure(xyz(p), q.data());
+        }
+        else if (positions.size())
+        {
+            scalarField part(positions.size());
+            scan.measure(xyz(p), part.data());
+            UIndirectList<scalar>(q, positions) = part;
+        }
+    };
+    measure(*scan_, scanned_);
+    if (planarScan_.valid())
+    {
+        measure(*planarScan_, planar_);
     }
     return q;
 }

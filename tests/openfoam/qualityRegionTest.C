@@ -10,9 +10,11 @@ License
 #include "dcpRBFQualityRegion.H"
 #include "dcpRBFCellQuality.H"
 #include "dcpRBFPlaneProjection.H"
+#include "dcpRBFPlanarCells.H"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 using namespace Foam;
@@ -50,7 +52,12 @@ void compareScans(const label dim, const scalar radius)
         pointField p(p0);
         forAll(p, i)
         {
-            std::mt19937 g(unsigned(1e4*p0[i].x()) + 7919*unsigned(1e4*p0[i].y()));
+            // (seeded by the rounded position: front and back twins differ
+            // in the last digits)
+            std::mt19937 g
+            (
+                unsigned(std::lround(1e4*p0[i].x()) + 7919*std::lround(1e4*p0[i].y()))
+            );
             const scalar dz = dim == 3 ? u(gen) : 0;
             p[i] += vector(u(g), u(g), dz);
         }
@@ -97,6 +104,20 @@ TEST(QualityRegion, FlatScanEqualsCellQuality3D)
 
 TEST(QualityRegion, FlatScanEqualsCellQuality2D)
 {
+    // the 2D mesh's cells are measured from their polygons (the comparisons
+    // below check them against the 3D decomposition)
+    testCase c(2, 10, "movingPatches (bottom); staticPatches (top); supportRadius 1;");
+    const dcpRBFPlanarCells planar(c.mesh(), identity(c.mesh().nCells()), c.mesh().points());
+    EXPECT_EQ(planar.planar().size(), c.mesh().nCells());
+    EXPECT_EQ(planar.others().size(), 0);
+    testCase c3(3, 4, "movingPatches (bottom); staticPatches (top); supportRadius 1;");
+    EXPECT_EQ
+    (
+        dcpRBFPlanarCells(c3.mesh(), identity(c3.mesh().nCells()), c3.mesh().points())
+            .planar().size(),
+        0
+    );
+
     compareScans(2, 2);
     compareScans(2, 0.35);
 }
