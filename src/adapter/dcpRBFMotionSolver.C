@@ -177,8 +177,10 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     const dcprbf::Values& d
 )
 {
+    // evaluated once per distinct point (2D: the front and back twins)
     const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
-    dcprbf::Values v(evalPoints_.rows(), 3);
+    const dcprbf::Points& x = distinct_.points();
+    dcprbf::Values v(x.rows(), 3);
     const std::size_t budget = std::size_t(settings_.evaluationMemoryMB()) << 20;
     if (stored_.prepare(s.centres(), budget))
     {
@@ -187,21 +189,23 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     }
     else
     {
-        s.evaluate(evalPoints_.data(), evalPoints_.rows(), v.data());
+        s.evaluate(x.data(), x.rows(), v.data());
     }
 
-    if (rotation_.active())
-    {
-        v += rotation_.displacement();
-    }
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
     forAll(disp, pointi)
     {
-        const auto kind = boundaryPoints_.kind(pointi);
-        disp[pointi] =
-            kind == dcpRBFBoundaryPoints::interiorPoint
-          ? projection_.fromCore(v.row(pointi).data())
-          : prescribed_[pointi];
+        if (boundaryPoints_.kind(pointi) != dcpRBFBoundaryPoints::interiorPoint)
+        {
+            disp[pointi] = prescribed_[pointi];
+            continue;
+        }
+        Eigen::RowVector3d u(v.row(distinct_.of(pointi)));
+        if (rotation_.active())
+        {
+            u += rotation_.displacement().row(pointi);
+        }
+        disp[pointi] = projection_.fromCore(u.data());
     }
 
     // Error at the boundary points, blended into the volume
