@@ -119,21 +119,31 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     s.minQuality = s.nCells ? gMin(q) : 1;
     s.meanQuality = s.nCells ? gSum(q)/s.nCells : 1;
 
-    // Local candidates (the n lowest and n highest, not a full sort), then
-    // the global n worst and n best
-    std::vector<rankedCell> ranked(q.size());
-    forAll(q, i)
+    // Local candidates (the n lowest and n highest, not a full sort, by
+    // position), then the global n worst and n best
+    const auto ranked = [&](const label i)
     {
-        ranked[i] = rankedCell({q[i], centres_[i][0], centres_[i][1], centres_[i][2]});
-    }
-    const label nLocal = min(n, label(ranked.size()));
-    std::vector<rankedCell> lowest(nLocal), highest(nLocal);
-    std::partial_sort_copy(ranked.begin(), ranked.end(), lowest.begin(), lowest.end());
+        return rankedCell({q[i], centres_[i][0], centres_[i][1], centres_[i][2]});
+    };
+    const auto lower = [&](const label a, const label b)
+    {
+        return q[a] < q[b] || (q[a] == q[b] && ranked(a) < ranked(b));
+    };
+    const auto higher = [&](const label a, const label b) { return lower(b, a); };
+    const label nLocal = min(n, q.size());
+    labelList positions(identity(q.size()));
+    std::vector<label> lowestAt(nLocal), highestAt(nLocal);
     std::partial_sort_copy
     (
-        ranked.begin(), ranked.end(), highest.begin(), highest.end(),
-        [](const rankedCell& a, const rankedCell& b) { return b < a; }
+        positions.begin(), positions.end(), lowestAt.begin(), lowestAt.end(), lower
     );
+    std::partial_sort_copy
+    (
+        positions.begin(), positions.end(), highestAt.begin(), highestAt.end(), higher
+    );
+    std::vector<rankedCell> lowest, highest;
+    for (const label i : lowestAt) lowest.push_back(ranked(i));
+    for (const label i : highestAt) highest.push_back(ranked(i));
 
     List<List<rankedCell>> worstAll(Pstream::nProcs()), bestAll(Pstream::nProcs());
     worstAll[Pstream::myProcNo()] = List<rankedCell>(lowest.begin(), lowest.end());
