@@ -57,23 +57,44 @@ PlanarCellQualityScan::PlanarCellQualityScan
         }
         pi = local[pi];
     }
-    points0_.resize(2*pointIds_.size());
-    for (std::size_t i = 0; i < pointIds_.size(); ++i)
+    // Per triangle (centre, a, b) the inverse of its reference edges
+    // E0 = (a0 - c0, b0 - c0), once: a measurement needs F = E E0^-1 only
+    const auto at = [&](const int k, const int d)
     {
-        points0_[2*i] = points0[3*std::size_t(pointIds_[i]) + axis0_];
-        points0_[2*i + 1] = points0[3*std::size_t(pointIds_[i]) + axis1_];
-    }
-    centres0_.assign(2*size(), 0.0);
+        return points0[3*std::size_t(pointIds_[std::size_t(k)]) + (d ? axis1_ : axis0_)];
+    };
+    inverse0_.resize(4*polygonPoints_.size());
+    degenerate_.assign(polygonPoints_.size(), 0);
     for (std::size_t i = 0; i < size(); ++i)
     {
         const std::size_t j0 = polygonStart_[i], j1 = polygonStart_[i + 1];
+        double c0[2] = {0, 0};
         for (std::size_t j = j0; j < j1; ++j)
         {
-            centres0_[2*i] += points0_[2*polygonPoints_[j]];
-            centres0_[2*i + 1] += points0_[2*polygonPoints_[j] + 1];
+            for (int d = 0; d < 2; ++d) c0[d] += at(polygonPoints_[j], d);
         }
-        centres0_[2*i] /= double(j1 - j0);
-        centres0_[2*i + 1] /= double(j1 - j0);
+        for (int d = 0; d < 2; ++d) c0[d] /= double(j1 - j0);
+        for (std::size_t j = j0; j < j1; ++j)
+        {
+            const int a = polygonPoints_[j], b = polygonPoints_[j + 1 < j1 ? j + 1 : j0];
+            const double ea[2] = {at(a, 0) - c0[0], at(a, 1) - c0[1]};
+            const double eb[2] = {at(b, 0) - c0[0], at(b, 1) - c0[1]};
+            const double det0 = ea[0]*eb[1] - ea[1]*eb[0];
+            const double scale2 = std::max(ea[0]*ea[0] + ea[1]*ea[1], eb[0]*eb[0] + eb[1]*eb[1]);
+            double* inv = &inverse0_[4*j];
+            if (det0*det0 > 1e-28*scale2*scale2)
+            {
+                inv[0] = eb[1]/det0;
+                inv[1] = -eb[0]/det0;
+                inv[2] = -ea[1]/det0;
+                inv[3] = ea[0]/det0;
+            }
+            else
+            {
+                degenerate_[j] = 1;   // quality 1 (TetQuality's convention)
+                inv[0] = inv[1] = inv[2] = inv[3] = 0;
+            }
+        }
     }
 }
 
@@ -90,31 +111,24 @@ double PlanarCellQualityScan::cellQuality(const std::size_t i, const double* x) 
     }
     c[0] /= n;
     c[1] /= n;
-    const double* c0 = &centres0_[2*i];
 
-    // Triangle (centre, a, b): reference edges ea, eb, current fa, fb;
-    // F det0 = (fa fb) adj(ea eb)
+    // Triangle (centre, a, b): F = (fa fb) E0^-1, the tetrahedra's
+    // A = diag(F, 1)
     TetMeasures::Worst worst(metric_);
     for (std::size_t j = j0; j < j1; ++j)
     {
+        if (degenerate_[j])
+        {
+            worst.add(-1, -1);
+            continue;
+        }
         const int a = polygonPoints_[j], b = polygonPoints_[j + 1 < j1 ? j + 1 : j0];
-        const double ea[2] = {points0_[2*a] - c0[0], points0_[2*a + 1] - c0[1]};
-        const double eb[2] = {points0_[2*b] - c0[0], points0_[2*b + 1] - c0[1]};
         const double fa[2] = {x[2*a] - c[0], x[2*a + 1] - c[1]};
         const double fb[2] = {x[2*b] - c[0], x[2*b + 1] - c[1]};
-        const double det0 = ea[0]*eb[1] - ea[1]*eb[0];
-        const double scale2 = std::max(ea[0]*ea[0] + ea[1]*ea[1], eb[0]*eb[0] + eb[1]*eb[1]);
-        double J = -1, a2 = -1;   // degenerate reference: quality 1
-        if (det0*det0 > 1e-28*scale2*scale2)
-        {
-            J = (fa[0]*fb[1] - fa[1]*fb[0])/det0;
-            const double m00 = fa[0]*eb[1] - fb[0]*ea[1];
-            const double m01 = fb[0]*ea[0] - fa[0]*eb[0];
-            const double m10 = fa[1]*eb[1] - fb[1]*ea[1];
-            const double m11 = fb[1]*ea[0] - fa[1]*eb[0];
-            a2 = (m00*m00 + m01*m01 + m10*m10 + m11*m11)/(det0*det0) + 1;
-        }
-        worst.add(J, a2);
+        const double* inv = &inverse0_[4*j];
+        const double f00 = fa[0]*inv[0] + fb[0]*inv[2], f01 = fa[0]*inv[1] + fb[0]*inv[3];
+        const double f10 = fa[1]*inv[0] + fb[1]*inv[2], f11 = fa[1]*inv[1] + fb[1]*inv[3];
+        worst.add(f00*f11 - f01*f10, f00*f00 + f01*f01 + f10*f10 + f11*f11 + 1);
     }
     return worst.quality();
 }

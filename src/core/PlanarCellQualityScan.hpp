@@ -57,10 +57,11 @@ private:
     int axis0_, axis1_;
     TetQuality::Metric metric_;
 
-    //- Reference in-plane coordinates of the points used (2 per point),
-    //  each polygon's reference vertex average (2 per polygon)
-    std::vector<double> points0_;
-    std::vector<double> centres0_;
+    //- Per polygon entry j (the triangle of the centre and the edge from
+    //  point j): the inverse of its reference edge matrix (2 x 2, row
+    //  major), and whether that is degenerate
+    std::vector<double> inverse0_;
+    std::vector<char> degenerate_;
 
     //- Quality of cell i for the compact current in-plane points x
     double cellQuality(std::size_t i, const double* x) const;

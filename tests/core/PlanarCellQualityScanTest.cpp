@@ -180,3 +180,18 @@ TEST(PlanarCellQualityScan, RefusesBadInput)
     EXPECT_THROW(PlanarCellQualityScan({0, 3}, {0, 1, 2}, p0, 1, 1), std::invalid_argument);
     EXPECT_THROW(PlanarCellQualityScan({0, 3}, {0, -1, 2}, p0, 0, 1), std::invalid_argument);
 }
+
+
+TEST(PlanarCellQualityScan, DegenerateReferenceIsOne)
+{
+    // a flat reference polygon (its points on a line): quality 1 whatever
+    // the motion (TetQuality's convention); a proper triangle beside it
+    const double p0[15] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 0, 1, 0};
+    const double p[15] = {0, 0, 0, 1, 0.5, 0, 2, -0.3, 0, 3, 0.2, 0, 0.5, 1, 0};
+    const PlanarCellQualityScan scan({0, 4, 7}, {0, 1, 2, 3, 0, 1, 4}, p0, 0, 1);
+    std::vector<double> q(2);
+    scan.measure(p, q.data());
+    EXPECT_EQ(q[0], 1.0);
+    EXPECT_LT(q[1], 1.0);
+    EXPECT_GT(q[1], 0.0);
+}
