@@ -1,6 +1,7 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 #include "CellQualityScan.hpp"
 #include "TetMeasures.hpp"
+#include "MortonOrder.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -39,6 +40,36 @@ CellQualityScan::CellQualityScan
         {
             throw std::invalid_argument("CellQualityScan: face index or face size");
         }
+    }
+
+    // The cells visited in Morton order of one point each, so that the
+    // points below are numbered with locality whatever the cells' numbering
+    {
+        const std::size_t nCells = cellStart_.size() - 1;
+        std::vector<double> key(3*nCells);
+        for (std::size_t i = 0; i < nCells; ++i)
+        {
+            const int f = cellFaces_[cellStart_[i]];
+            const int pi = facePoints_[faceStart_[f]];
+            if (pi < 0) throw std::invalid_argument("CellQualityScan: point index");
+            for (int d = 0; d < 3; ++d) key[3*i + d] = points0[3*std::size_t(pi) + d];
+        }
+        order_ = mortonOrder(key.data(), nCells);
+        std::vector<std::size_t> start(1, 0);
+        std::vector<int> faces;
+        faces.reserve(cellFaces_.size());
+        for (const int c : order_)
+        {
+            faces.insert
+            (
+                faces.end(),
+                cellFaces_.begin() + std::ptrdiff_t(cellStart_[c]),
+                cellFaces_.begin() + std::ptrdiff_t(cellStart_[c + 1])
+            );
+            start.push_back(faces.size());
+        }
+        cellStart_.swap(start);
+        cellFaces_.swap(faces);
     }
 
     // The points renumbered in the order in which the cells use them (a
@@ -278,7 +309,7 @@ void CellQualityScan::measure(const double* p, double* q) const
         #pragma omp for schedule(static, 256)
         for (long i = 0; i < n; ++i)
         {
-            q[i] = cellQuality(std::size_t(i), x.data(), buf, pointBuf);
+            q[order_[i]] = cellQuality(std::size_t(i), x.data(), buf, pointBuf);
         }
     }
 }

@@ -8,11 +8,13 @@
 // average of its face centres; the cell's quality is the minimum over its
 // tetrahedra. A tetrahedral cell is measured once, as itself: each of its
 // decomposition's tetrahedra is an affine image of it (its centres are fixed
-// combinations of its vertices), so each has its A (equal to round-off). The reference centres are computed once at construction
-// (from the reference points), the topology is stored flat (compressed
-// rows, each cell's faces with the cell, the points renumbered in the order
-// the cells use them), and a measurement gathers the current points once
-// into that order and reads the topology in order: no per-cell allocation,
+// combinations of its vertices), so each has its A (equal to round-off).
+// The reference centres are computed once at construction (from the
+// reference points), the topology is stored flat (compressed rows, the
+// cells in Morton order of their first point (MortonOrder), each cell's
+// faces with the cell, the points renumbered in the order the cells use
+// them), and a measurement gathers the current points once into that order
+// and reads the topology in order: no per-cell allocation,
 // no per-step work on the reference mesh.
 //
 // Every cell's value depends only on its own points: a measurement with any
@@ -57,6 +59,9 @@ private:
     std::vector<int> cellFaces_;
     std::vector<std::size_t> faceStart_;
     std::vector<int> facePoints_;
+
+    //- The caller's index of each cell, in the order stored (Morton order)
+    std::vector<int> order_;
 
     //- The points used (their indices in the caller's numbering) in the
     //  order of first use; facePoints_ refer to this order
