@@ -122,4 +122,45 @@ TEST(QualityRegion, FlatScanEqualsCellQuality2D)
     compareScans(2, 0.35);
 }
 
+TEST(QualityRegion, MixedPolygonAndDecomposedCellsEqualCellQuality2D)
+{
+    // reference points with a few back-plane points shifted in the plane:
+    // the cells using them are no prisms (measured by the decomposition),
+    // the others are (from their polygons); every value in its place
+    testCase c(2, 10, "movingPatches (bottom); staticPatches (top); supportRadius 1;");
+    const polyMesh& mesh = c.mesh();
+    pointField p0(mesh.points());
+    label nShifted = 0;
+    forAll(p0, i)
+    {
+        if (p0[i].z() < 0.05 && (i % 7) == 3)
+        {
+            p0[i].x() += 0.01;
+            ++nShifted;
+        }
+    }
+    ASSERT_GT(nShifted, 0);
+    const labelList cells(identity(mesh.nCells()));
+    const dcpRBFPlanarCells sorted(mesh, cells, p0);
+    ASSERT_GT(sorted.planar().size(), 0);
+    ASSERT_GT(sorted.others().size(), 0);
+
+    // an in-plane motion, the same for twins (by their unshifted position)
+    pointField p(p0);
+    forAll(p, i)
+    {
+        const point& x = mesh.points()[i];
+        p[i] += vector(0.02*std::sin(7*x.y()), 0.03*std::cos(5*x.x()), 0);
+    }
+    const dcpRBFCellQuality quality(mesh, cells, p0, dcprbf::TetQuality::Metric::sizeShape);
+    const scalarField q(quality.compute(p));
+    const scalarField ref(quality.compute(cells, p0, p));
+    ASSERT_EQ(q.size(), ref.size());
+    forAll(q, i)
+    {
+        EXPECT_NEAR(q[i], ref[i], 1e-10) << i;
+    }
+    EXPECT_LT(min(ref), 1 - 1e-3);
+}
+
 } // namespace
