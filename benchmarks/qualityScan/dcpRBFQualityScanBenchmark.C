@@ -58,16 +58,16 @@ int main(int argc, char *argv[])
 
     const pointField& p0 = mesh.points();
     const boundBox bb(p0);
+    // 2D: the motion of a 2D case, in the plane and the same for the front
+    // and back twins (the empty coordinate neither moves nor enters)
+    const label empty = mesh.nSolutionD() == 2 ? findMin(mesh.solutionD()) : -1;
     pointField p(p0);
     forAll(p, i)
     {
-        const vector x((p0[i] - bb.min())/max(bb.mag(), SMALL));
+        vector x((p0[i] - bb.min())/max(bb.mag(), SMALL));
+        if (empty >= 0) x[empty] = 0;
         p[i] += 0.01*bb.mag()*vector(Foam::sin(3*x.y()), Foam::sin(2*x.z() + x.x()), 0.5*Foam::sin(4*x.x()));
-    }
-    if (mesh.nSolutionD() == 2)
-    {
-        const label e = findMin(mesh.solutionD());
-        forAll(p, i) p[i][e] = p0[i][e];
+        if (empty >= 0) p[i][empty] = p0[i][empty];
     }
 
     // the region of every cell: the "moving points" are all points
