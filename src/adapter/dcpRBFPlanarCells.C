@@ -84,19 +84,45 @@ bool Foam::dcpRBFPlanarCells::appendPolygon
         if (facei != caps[0] && facei != caps[1] && faces[facei].size() != 4) return false;
     }
 
-    // every point of the first cap has an in-plane twin in the second
+    // every point of the first cap has its own in-plane twin in the second
     const boundBox box(points0, a, false);
     const scalar tol = 1e-8*mag(box.span());
-    for (const label pa : a)
+    labelList twin(a.size(), -1);
+    forAll(a, i)
     {
-        bool twin = false;
         for (const label pb : b)
         {
-            twin = twin
-             || (mag(points0[pa][axis0_] - points0[pb][axis0_]) <= tol
-              && mag(points0[pa][axis1_] - points0[pb][axis1_]) <= tol);
+            if
+            (
+                mag(points0[a[i]][axis0_] - points0[pb][axis0_]) <= tol
+             && mag(points0[a[i]][axis1_] - points0[pb][axis1_]) <= tol
+            )
+            {
+                if (twin[i] >= 0) return false;   // two candidates
+                twin[i] = pb;
+            }
         }
-        if (!twin) return false;
+        if (twin[i] < 0 || twin.find(twin[i]) < i) return false;   // none, or shared
+    }
+
+    // and each side face joins an edge of the first cap to its twins (not
+    // a twisted prism)
+    forAll(a, i)
+    {
+        const label j = a.fcIndex(i);
+        const label ends[4] = {a[i], a[j], twin[i], twin[j]};
+        bool joined = false;
+        for (const label facei : c)
+        {
+            const face& f = faces[facei];
+            joined = joined
+             || (
+                    facei != caps[0] && facei != caps[1]
+                 && f.found(ends[0]) && f.found(ends[1])
+                 && f.found(ends[2]) && f.found(ends[3])
+                );
+        }
+        if (!joined) return false;
     }
     polygonPoints_.insert(polygonPoints_.end(), a.begin(), a.end());
     return true;

@@ -3,6 +3,7 @@
 #include "MortonOrder.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace dcprbf
@@ -30,6 +31,17 @@ CellQualityScan::CellQualityScan
      || faceStart_.empty() || faceStart_.back() != facePoints_.size())
     {
         throw std::invalid_argument("CellQualityScan: inconsistent compressed rows");
+    }
+    for (std::size_t i = 0; i + 1 < cellStart_.size(); ++i)
+    {
+        if (cellStart_[i + 1] <= cellStart_[i])
+        {
+            throw std::invalid_argument("CellQualityScan: a cell without faces");
+        }
+    }
+    if (cellFaces_.size() > std::size_t(std::numeric_limits<int>::max()))
+    {
+        throw std::invalid_argument("CellQualityScan: more than 2^31 cell faces");
     }
     const std::size_t nFaces = faceStart_.size() - 1;
     for (const int f : cellFaces_)

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <stdexcept>
 
 namespace dcprbf
 {
@@ -11,6 +12,11 @@ DistinctRows::DistinctRows(const Points& p)
 :
     rowOf_(std::size_t(p.rows()))
 {
+    if (!p.allFinite())
+    {
+        throw std::invalid_argument("DistinctRows: a point that is not finite");
+    }
+
     // rows sorted lexicographically (ties by index): equal rows adjacent,
     // the first of each run its first occurrence
     std::vector<Eigen::Index> order(std::size_t(p.rows()));

@@ -264,6 +264,7 @@ TEST(CellQualityScan, RefusesInconsistentRows)
     EXPECT_THROW(CellQualityScan({0, 2}, {0}, {0, 3}, {0, 1, 2}, p0), std::invalid_argument);
     EXPECT_THROW(CellQualityScan({0, 1}, {1}, {0, 3}, {0, 1, 2}, p0), std::invalid_argument);
     EXPECT_THROW(CellQualityScan({0, 1}, {0}, {0, 2}, {0, 1}, p0), std::invalid_argument);
+    EXPECT_THROW(CellQualityScan({0, 0, 1}, {0}, {0, 3}, {0, 1, 2}, p0), std::invalid_argument);
 }
 
 

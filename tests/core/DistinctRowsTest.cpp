@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <stdexcept>
 
 using namespace dcprbf;
 
@@ -60,4 +62,13 @@ TEST(DistinctRows, TwinPlanesHalveTheRows)
         ASSERT_LE(d.of(i), next);
         if (d.of(i) == next) ++next;
     }
+}
+
+
+TEST(DistinctRows, RefusesAPointThatIsNotFinite)
+{
+    Points p(2, 3);
+    p << 0, 0, 0,
+         1, std::nan(""), 0;
+    EXPECT_THROW(DistinctRows d(p), std::invalid_argument);
 }

@@ -122,6 +122,49 @@ TEST(QualityRegion, FlatScanEqualsCellQuality2D)
     compareScans(2, 0.35);
 }
 
+TEST(QualityRegion, TwistedPrismIsNoPlanarCell)
+{
+    // a cell whose front points sit at the in-plane positions of the back
+    // points' neighbours: every back point has a twin, but the side faces
+    // do not join an edge to its twins, so the polygon is not the cell
+    testCase c(2, 4, "movingPatches (bottom); staticPatches (top); supportRadius 1;");
+    const polyMesh& mesh = c.mesh();
+    const label celli = 5;
+    const dcpRBFPlanarCells straight(mesh, labelList(1, celli), mesh.points());
+    ASSERT_EQ(straight.planar().size(), 1);
+
+    pointField p0(mesh.points());
+    const cell& cl = mesh.cells()[celli];
+    face back, front;
+    for (const label facei : cl)
+    {
+        const face& f = mesh.faces()[facei];
+        if (f.size() == 4 && mag(f.areaNormal(p0).z()) > 0.99*mag(f.areaNormal(p0)))
+        {
+            (p0[f[0]].z() < 0.05 ? back : front) = f;
+        }
+    }
+    ASSERT_EQ(back.size(), 4);
+    ASSERT_EQ(front.size(), 4);
+    forAll(back, i)
+    {
+        // the front twin of back[i] moved to back[i+1]'s position
+        for (const label pf : front)
+        {
+            const point& x = mesh.points()[pf];
+            const point& y = mesh.points()[back[i]];
+            if (mag(x.x() - y.x()) + mag(x.y() - y.y()) < 1e-9)
+            {
+                p0[pf].x() = mesh.points()[back.nextLabel(i)].x();
+                p0[pf].y() = mesh.points()[back.nextLabel(i)].y();
+            }
+        }
+    }
+    const dcpRBFPlanarCells twisted(mesh, labelList(1, celli), p0);
+    EXPECT_EQ(twisted.planar().size(), 0);
+    EXPECT_EQ(twisted.others().size(), 1);
+}
+
 TEST(QualityRegion, MixedPolygonAndDecomposedCellsEqualCellQuality2D)
 {
     // reference points with a few back-plane points shifted in the plane:
