@@ -8,7 +8,10 @@
 // average of its face centres; the cell's quality is the minimum over its
 // tetrahedra. A tetrahedral cell is measured once, as itself: each of its
 // decomposition's tetrahedra is an affine image of it (its centres are fixed
-// combinations of its vertices), so each has its A (equal to round-off).
+// combinations of its vertices), so each has its A (equal to round-off;
+// only whether a reference is degenerate, quality 1 by TetQuality's
+// convention, is judged on the cell itself: for references within ~1e-14 of
+// degenerate the two conventions can differ).
 // The reference centres are computed once at construction (from the
 // reference points), the topology is stored flat (compressed rows, the
 // cells in Morton order of their first point (MortonOrder), each cell's

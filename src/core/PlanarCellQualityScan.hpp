@@ -11,6 +11,9 @@
 // triangles of the tetrahedron quality with J = det F and |A|^2 = |F|^2 + 1:
 // the value of CellQualityScan on the prism (equal to round-off), from n
 // 2 x 2 maps instead of 6n tetrahedra (a quadrilateral: 4 instead of 24).
+// A degenerate reference triangle (quality 1 by TetQuality's convention) is
+// judged in the plane: for references within ~1e-14 of degenerate, or thinner
+// in the plane than ~1e-7 of the extrusion, the conventions can differ.
 //
 // Every cell's value depends only on its own points: a measurement with any
 // number of OpenMP threads gives bit-identical values.
