@@ -119,8 +119,8 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     s.minQuality = s.nCells ? gMin(q) : 1;
     s.meanQuality = s.nCells ? gSum(q)/s.nCells : 1;
 
-    // Local candidates (the n lowest and n highest, not a full sort, by
-    // position), then the global n worst and n best
+    // Local candidates (the n lowest and n highest, in one pass over the
+    // positions, kept sorted), then the global n worst and n best
     const auto ranked = [&](const label i)
     {
         return rankedCell({q[i], centres_[i][0], centres_[i][1], centres_[i][2]});
@@ -131,16 +131,20 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     };
     const auto higher = [&](const label a, const label b) { return lower(b, a); };
     const label nLocal = min(n, q.size());
-    labelList positions(identity(q.size()));
-    std::vector<label> lowestAt(nLocal), highestAt(nLocal);
-    std::partial_sort_copy
-    (
-        positions.begin(), positions.end(), lowestAt.begin(), lowestAt.end(), lower
-    );
-    std::partial_sort_copy
-    (
-        positions.begin(), positions.end(), highestAt.begin(), highestAt.end(), higher
-    );
+    std::vector<label> lowestAt, highestAt;
+    const auto keep = [nLocal](std::vector<label>& kept, const label i, const auto& before)
+    {
+        if (label(kept.size()) < nLocal || before(i, kept.back()))
+        {
+            kept.insert(std::upper_bound(kept.begin(), kept.end(), i, before), i);
+            if (label(kept.size()) > nLocal) kept.pop_back();
+        }
+    };
+    for (label i = 0; nLocal > 0 && i < q.size(); ++i)
+    {
+        keep(lowestAt, i, lower);
+        keep(highestAt, i, higher);
+    }
     std::vector<rankedCell> lowest, highest;
     for (const label i : lowestAt) lowest.push_back(ranked(i));
     for (const label i : highestAt) highest.push_back(ranked(i));
