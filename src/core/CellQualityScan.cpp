@@ -1,5 +1,6 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 #include "CellQualityScan.hpp"
+#include "CellShapes.hpp"
 #include "MortonOrder.hpp"
 
 #include <algorithm>
@@ -19,32 +20,28 @@ CellQualityScan::CellQualityScan
     TetQuality::Metric metric
 )
 :
-    cellStart_(std::move(cellStart)),
-    cellFaces_(std::move(cellFaces)),
     faceStart_(std::move(faceStart)),
     facePoints_(std::move(facePoints)),
-    metric_(metric),
-    faceCentres0_(3*cellFaces_.size()),
-    cellCentres0_(3*(cellStart_.empty() ? 0 : cellStart_.size() - 1))
+    metric_(metric)
 {
-    if (cellStart_.empty() || cellStart_.back() != cellFaces_.size()
+    if (cellStart.empty() || cellStart.back() != cellFaces.size()
      || faceStart_.empty() || faceStart_.back() != facePoints_.size())
     {
         throw std::invalid_argument("CellQualityScan: inconsistent compressed rows");
     }
-    for (std::size_t i = 0; i + 1 < cellStart_.size(); ++i)
+    for (std::size_t i = 0; i + 1 < cellStart.size(); ++i)
     {
-        if (cellStart_[i + 1] <= cellStart_[i])
+        if (cellStart[i + 1] <= cellStart[i])
         {
             throw std::invalid_argument("CellQualityScan: a cell without faces");
         }
     }
-    if (cellFaces_.size() > std::size_t(std::numeric_limits<int>::max()))
+    if (cellFaces.size() > std::size_t(std::numeric_limits<int>::max()))
     {
         throw std::invalid_argument("CellQualityScan: more than 2^31 cell faces");
     }
     const std::size_t nFaces = faceStart_.size() - 1;
-    for (const int f : cellFaces_)
+    for (const int f : cellFaces)
     {
         if (f < 0 || std::size_t(f) >= nFaces || faceStart_[f + 1] - faceStart_[f] < 3)
         {
@@ -55,11 +52,11 @@ CellQualityScan::CellQualityScan
     // The cells visited in Morton order of one point each, so that the
     // points below are numbered with locality whatever the cells' numbering
     {
-        const std::size_t nCells = cellStart_.size() - 1;
+        const std::size_t nCells = cellStart.size() - 1;
         std::vector<double> key(3*nCells);
         for (std::size_t i = 0; i < nCells; ++i)
         {
-            const int f = cellFaces_[cellStart_[i]];
+            const int f = cellFaces[cellStart[i]];
             const int pi = facePoints_[faceStart_[f]];
             if (pi < 0) throw std::invalid_argument("CellQualityScan: point index");
             for (int d = 0; d < 3; ++d) key[3*i + d] = points0[3*std::size_t(pi) + d];
@@ -67,19 +64,19 @@ CellQualityScan::CellQualityScan
         order_ = mortonOrder(key.data(), nCells);
         std::vector<std::size_t> start(1, 0);
         std::vector<int> faces;
-        faces.reserve(cellFaces_.size());
+        faces.reserve(cellFaces.size());
         for (const int c : order_)
         {
             faces.insert
             (
                 faces.end(),
-                cellFaces_.begin() + std::ptrdiff_t(cellStart_[c]),
-                cellFaces_.begin() + std::ptrdiff_t(cellStart_[c + 1])
+                cellFaces.begin() + std::ptrdiff_t(cellStart[c]),
+                cellFaces.begin() + std::ptrdiff_t(cellStart[c + 1])
             );
             start.push_back(faces.size());
         }
-        cellStart_.swap(start);
-        cellFaces_.swap(faces);
+        cellStart.swap(start);
+        cellFaces.swap(faces);
     }
 
     // The points renumbered in the order in which the cells use them (a
@@ -91,7 +88,7 @@ CellQualityScan::CellQualityScan
         maxIndex = std::max(maxIndex, pi);
     }
     std::vector<int> local(std::size_t(maxIndex + 1), -1);
-    for (const int f : cellFaces_)
+    for (const int f : cellFaces)
     {
         for (std::size_t j = faceStart_[f]; j < faceStart_[f + 1]; ++j)
         {
@@ -109,8 +106,8 @@ CellQualityScan::CellQualityScan
     {
         std::vector<std::size_t> entryStart(1, 0);
         std::vector<int> entryPoints;
-        entryStart.reserve(cellFaces_.size() + 1);
-        for (int& f : cellFaces_)
+        entryStart.reserve(cellFaces.size() + 1);
+        for (const int f : cellFaces)
         {
             entryPoints.insert
             (
@@ -118,40 +115,95 @@ CellQualityScan::CellQualityScan
                 facePoints_.begin() + std::ptrdiff_t(faceStart_[f]),
                 facePoints_.begin() + std::ptrdiff_t(faceStart_[f + 1])
             );
-            f = int(entryStart.size()) - 1;
             entryStart.push_back(entryPoints.size());
         }
         faceStart_.swap(entryStart);
         facePoints_.swap(entryPoints);
     }
+    std::vector<int>().swap(cellFaces);
+    classify(cellStart);
+
     points0_.resize(3*pointIds_.size());
     for (std::size_t i = 0; i < pointIds_.size(); ++i)
     {
         for (int d = 0; d < 3; ++d) points0_[3*i + d] = points0[3*std::size_t(pointIds_[i]) + d];
     }
-    for (std::size_t i = 0; i + 1 < cellStart_.size(); ++i)
+    const std::size_t nGeneral = cellStart_.size() - 1;
+    faceCentres0_.resize(3*(faceStart_.size() - 1));
+    cellCentres0_.resize(3*nGeneral);
+    for (std::size_t g = 0; g < nGeneral; ++g)
     {
-        double* cc = &cellCentres0_[3*i];
+        double* cc = &cellCentres0_[3*g];
         cc[0] = cc[1] = cc[2] = 0;
-        for (std::size_t k = cellStart_[i]; k < cellStart_[i + 1]; ++k)
+        for (std::size_t k = cellStart_[g]; k < cellStart_[g + 1]; ++k)
         {
-            const int f = cellFaces_[k];
             double* fc = &faceCentres0_[3*k];
             fc[0] = fc[1] = fc[2] = 0;
-            for (std::size_t j = faceStart_[f]; j < faceStart_[f + 1]; ++j)
+            for (std::size_t j = faceStart_[k]; j < faceStart_[k + 1]; ++j)
             {
                 for (int d = 0; d < 3; ++d) fc[d] += points0_[3*std::size_t(facePoints_[j]) + d];
             }
-            const double n = double(faceStart_[f + 1] - faceStart_[f]);
+            const double n = double(faceStart_[k + 1] - faceStart_[k]);
             for (int d = 0; d < 3; ++d)
             {
                 fc[d] /= n;
                 cc[d] += fc[d];
             }
         }
-        const double n = double(cellStart_[i + 1] - cellStart_[i]);
+        const double n = double(cellStart_[g + 1] - cellStart_[g]);
         for (int d = 0; d < 3; ++d) cc[d] /= n;
     }
+}
+
+
+void CellQualityScan::classify(std::vector<std::size_t>& cellStart)
+{
+    const std::size_t nCells = cellStart.size() - 1;
+    if (6*nCells > std::size_t(std::numeric_limits<int>::max()))
+    {
+        throw std::invalid_argument("CellQualityScan: more than 2^31/6 cells");
+    }
+    kind_.resize(nCells);
+    slot_.resize(nCells);
+    std::vector<std::size_t> generalStart(1, 0), entryStart(1, 0);
+    std::vector<int> entryPoints;
+    for (std::size_t i = 0; i < nCells; ++i)
+    {
+        const std::size_t k0 = cellStart[i], nFaces = cellStart[i + 1] - k0;
+        int v[6];
+        if (tetrahedronVertices(&faceStart_[k0], nFaces, facePoints_.data(), v))
+        {
+            kind_[i] = tetrahedron;
+            slot_[i] = int(vertices_.size());
+            vertices_.insert(vertices_.end(), v, v + 4);
+        }
+        else if (prismVertices(&faceStart_[k0], nFaces, facePoints_.data(), v))
+        {
+            kind_[i] = prism;
+            slot_[i] = int(vertices_.size());
+            vertices_.insert(vertices_.end(), v, v + 6);
+        }
+        else
+        {
+            kind_[i] = general;
+            slot_[i] = int(generalStart.size()) - 1;
+            for (std::size_t k = k0; k < k0 + nFaces; ++k)
+            {
+                entryPoints.insert
+                (
+                    entryPoints.end(),
+                    facePoints_.begin() + std::ptrdiff_t(faceStart_[k]),
+                    facePoints_.begin() + std::ptrdiff_t(faceStart_[k + 1])
+                );
+                entryStart.push_back(entryPoints.size());
+            }
+            generalStart.push_back(entryStart.size() - 1);
+        }
+    }
+    cellStart_.swap(generalStart);
+    faceStart_.swap(entryStart);
+    facePoints_.swap(entryPoints);
+    vertices_.shrink_to_fit();
 }
 
 } // namespace dcprbf

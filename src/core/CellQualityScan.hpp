@@ -12,18 +12,25 @@
 // only whether a reference is degenerate, quality 1 by TetQuality's
 // convention, is judged on the cell itself: for references within ~1e-14 of
 // degenerate the two conventions can differ).
-// The reference centres are computed once at construction (from the
-// reference points), the topology is stored flat (compressed rows, the
-// cells in Morton order of their first point (MortonOrder), each cell's
-// faces with the cell, the points renumbered in the order the cells use
-// them), and a measurement gathers the current points once into that order
-// and reads the topology in order: no per-cell allocation,
-// no per-step work on the reference mesh.
+// Tetrahedra (4 vertices) and triangular prisms (6; CellShapes) are stored
+// by their vertices and measured in SIMD lanes (TetBatch; PrismBatch: one
+// prism per lane, its 18 tetrahedra and its worst in the lane), the other
+// cells by their faces (each cell's faces stored with the cell, reference
+// face and cell centres computed once; their tetrahedra gathered into a
+// TetBatch). The cells are visited in Morton order of their first point
+// (MortonOrder) in blocks, the points renumbered in the order the cells use
+// them; a measurement gathers the current points once into that order: no
+// per-cell allocation, no per-step work on the reference mesh but the
+// prisms' reference edges (recomputed: storing them would take 18 x 9
+// doubles per prism).
 //
-// Every cell's value depends only on its own points: a measurement with any
-// number of OpenMP threads gives bit-identical values.
+// Every cell's value depends only on its own points and no operation is
+// contracted: a measurement with any number of OpenMP threads, in any
+// block and on either SIMD build gives bit-identical values.
 #pragma once
 
+#include "PrismBatch.hpp"
+#include "TetBatch.hpp"
 #include "TetQuality.hpp"
 
 #include <cstddef>
@@ -51,46 +58,65 @@ public:
     );
 
     //- Number of cells
-    std::size_t size() const { return cellStart_.size() - 1; }
+    std::size_t size() const { return order_.size(); }
 
     //- Quality of every cell for the points p (x y z per point, indexed
-    //  as the reference points) into q
-    void measure(const double* p, double* q) const;
+    //  as the reference points) into q (wide false: the SIMD kernels'
+    //  default-target build even where AVX2 is there; the same values)
+    void measure(const double* p, double* q, bool wide = true) const;
 
 private:
-    std::vector<std::size_t> cellStart_;
-    std::vector<int> cellFaces_;
-    std::vector<std::size_t> faceStart_;
-    std::vector<int> facePoints_;
+    //- How a cell is measured: from its vertices (a tetrahedron: one
+    //  measure; a prism: PrismBatch) or from its faces (general)
+    enum Kind : unsigned char { general, tetrahedron, prism };
 
     //- The caller's index of each cell, in the order stored (Morton order)
     std::vector<int> order_;
 
+    //- Per cell: its kind, and its first vertex in vertices_ (tetrahedra,
+    //  prisms) or its row in the general cells' topology
+    std::vector<Kind> kind_;
+    std::vector<int> slot_;
+
+    //- The tetrahedra's and prisms' vertices (CellShapes' order)
+    std::vector<int> vertices_;
+
+    //- The general cells: each one's faces stored with it (entries),
+    //  general cell g has the entries cellStart_[g] .. cellStart_[g+1],
+    //  entry k the points facePoints_[faceStart_[k] .. faceStart_[k+1])
+    std::vector<std::size_t> cellStart_;
+    std::vector<std::size_t> faceStart_;
+    std::vector<int> facePoints_;
+
     //- The points used (their indices in the caller's numbering) in the
-    //  order of first use; facePoints_ refer to this order
+    //  order of first use; vertices_ and facePoints_ refer to this order
     std::vector<int> pointIds_;
 
     //- Their reference coordinates (x y z)
     std::vector<double> points0_;
     TetQuality::Metric metric_;
 
-    //- Reference face centres per entry of cellFaces_ (x y z), reference
-    //  cell centres (x y z)
+    //- The general cells' reference face centres per entry (x y z) and
+    //  reference cell centres (x y z)
     std::vector<double> faceCentres0_;
     std::vector<double> cellCentres0_;
 
-    //- Is the cell whose faces start at entry k0 (four of them) a
-    //  tetrahedron (four triangles)? Its vertices into v
-    bool tetVertices(std::size_t k0, int v[4]) const;
+    //- Sort the cells (kind_, slot_, vertices_) and keep the general
+    //  cells' entries only; cellFaces: entry numbers (the identity)
+    void classify(std::vector<std::size_t>& cellStart);
 
-    //- Quality of cell i for the compact current points x (buf,
-    //  pointBuf: scratch space)
-    double cellQuality
+    //- Number of tetrahedra of general cell g
+    std::size_t tetCount(std::size_t g) const;
+
+    //- General cell g's tetrahedra for the compact current points x into
+    //  batch from position t (buf: scratch space)
+    void addTets
     (
-        std::size_t i,
+        std::size_t g,
         const double* x,
-        std::vector<double>& buf,
-        std::vector<double>& pointBuf
+        TetBatch& batch,
+        std::size_t t,
+        std::vector<double>& buf
     ) const;
 };
 

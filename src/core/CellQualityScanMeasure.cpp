@@ -8,70 +8,35 @@
 namespace dcprbf
 {
 
-bool CellQualityScan::tetVertices(const std::size_t k0, int v[4]) const
+std::size_t CellQualityScan::tetCount(const std::size_t g) const
 {
-    // four triangles: the first face's points and the one point of the
-    // second face that is not among them
-    for (std::size_t k = k0; k < k0 + 4; ++k)
-    {
-        const int f = cellFaces_[k];
-        if (faceStart_[f + 1] - faceStart_[f] != 3) return false;
-    }
-    const int* a = &facePoints_[faceStart_[cellFaces_[k0]]];
-    const int* b = &facePoints_[faceStart_[cellFaces_[k0 + 1]]];
-    v[0] = a[0]; v[1] = a[1]; v[2] = a[2];
-    for (int j = 0; j < 3; ++j)
-    {
-        if (b[j] != a[0] && b[j] != a[1] && b[j] != a[2])
-        {
-            v[3] = b[j];
-            return true;
-        }
-    }
-    return false;
+    return faceStart_[cellStart_[g + 1]] - faceStart_[cellStart_[g]];
 }
 
 
-double CellQualityScan::cellQuality
+void CellQualityScan::addTets
 (
-    const std::size_t i,
+    const std::size_t g,
     const double* x,
-    std::vector<double>& buf,
-    std::vector<double>& pointBuf
+    TetBatch& batch,
+    std::size_t t,
+    std::vector<double>& buf
 ) const
 {
-    const std::size_t k0 = cellStart_[i], k1 = cellStart_[i + 1];
-    if (k1 - k0 == 4)
-    {
-        int v[4];
-        if (tetVertices(k0, v))
-        {
-            // Every tetrahedron of the decomposition is an affine image of
-            // the cell's (its centres are fixed combinations of the cell's
-            // vertices): each has the cell's own A. One measure.
-            const double* x0 = points0_.data();
-            double J, a2;
-            TetMeasures::measures
-            (
-                x0 + 3*v[0], x0 + 3*v[1], x0 + 3*v[2], x0 + 3*v[3],
-                x + 3*v[0], x + 3*v[1], x + 3*v[2], x + 3*v[3], J, a2
-            );
-            return TetMeasures::quality(J, a2, metric_);
-        }
-    }
+    const double* x0 = points0_.data();
+    const std::size_t k0 = cellStart_[g], k1 = cellStart_[g + 1];
     buf.resize(3*(k1 - k0));
     double cc[3] = {0, 0, 0};
     for (std::size_t k = k0; k < k1; ++k)
     {
-        const int fi = cellFaces_[k];
         double* fc = &buf[3*(k - k0)];
         fc[0] = fc[1] = fc[2] = 0;
-        for (std::size_t j = faceStart_[fi]; j < faceStart_[fi + 1]; ++j)
+        for (std::size_t j = faceStart_[k]; j < faceStart_[k + 1]; ++j)
         {
             const double* y = x + 3*std::size_t(facePoints_[j]);
             fc[0] += y[0]; fc[1] += y[1]; fc[2] += y[2];
         }
-        const double n = double(faceStart_[fi + 1] - faceStart_[fi]);
+        const double n = double(faceStart_[k + 1] - faceStart_[k]);
         for (int d = 0; d < 3; ++d)
         {
             fc[d] /= n;
@@ -80,84 +45,50 @@ double CellQualityScan::cellQuality
     }
     for (int d = 0; d < 3; ++d) cc[d] /= double(k1 - k0);
 
-    // The tetrahedra of face k: (cc, fc, a_j, a_j+1). Per face point (its
-    // vertices' edges from the cell centre, the cross products with the
-    // face centre's edge) once, shared by the face's two tetrahedra at it.
-    // The worst tetrahedron by a monotone function of its quality without
-    // cbrt and sqrt (rankKey); its quality computed once. Inverted and
-    // degenerate ones and keys out of the key's range compare by their
-    // quality.
-    const double* cc0 = &cellCentres0_[3*i];
-    const double* x0 = points0_.data();
-    TetMeasures::Worst worst(metric_);
+    // The tetrahedra of face k: (cc, fc, a_j, a_j+1), edges from cc
+    const double* cc0 = &cellCentres0_[3*g];
     for (std::size_t k = k0; k < k1; ++k)
     {
-        const int fi = cellFaces_[k];
         const double* fc0 = &faceCentres0_[3*k];
         const double* fc = &buf[3*(k - k0)];
-        const std::size_t j0 = faceStart_[fi], n = faceStart_[fi + 1] - j0;
+        const std::size_t j0 = faceStart_[k], n = faceStart_[k + 1] - j0;
         double e0[3], f0[3];
         for (int d = 0; d < 3; ++d)
         {
             e0[d] = fc0[d] - cc0[d];
             f0[d] = fc[d] - cc[d];
         }
-        const double s0 = TetMeasures::dot(e0, e0);
-
-        // per point: e (3), f (3), w = e0 x e (3), g = f0 x f (3), |e|^2
-        pointBuf.resize(13*n);
-        for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t j = 0; j < n; ++j, ++t)
         {
-            double* r = &pointBuf[13*j];
-            const std::size_t pi = 3*std::size_t(facePoints_[j0 + j]);
+            const std::size_t a = 3*std::size_t(facePoints_[j0 + j]);
+            const std::size_t b = 3*std::size_t(facePoints_[j0 + (j + 1 < n ? j + 1 : 0)]);
+            double ea[3], eb[3], fa[3], fb[3];
             for (int d = 0; d < 3; ++d)
             {
-                r[d] = x0[pi + d] - cc0[d];
-                r[3 + d] = x[pi + d] - cc[d];
+                ea[d] = x0[a + d] - cc0[d];
+                eb[d] = x0[b + d] - cc0[d];
+                fa[d] = x[a + d] - cc[d];
+                fb[d] = x[b + d] - cc[d];
             }
-            TetMeasures::cross(e0, r, r + 6);
-            TetMeasures::cross(f0, r + 3, r + 9);
-            r[12] = TetMeasures::dot(r, r);
-        }
-        for (std::size_t j = 0; j < n; ++j)
-        {
-            const double* ra = &pointBuf[13*j];
-            const double* rb = &pointBuf[13*(j + 1 < n ? j + 1 : 0)];
-            // E0 = (e0, ea, eb), E0^-1 det0 = rows (ea x eb, eb x e0, e0 x ea)
-            double adj0[3];
-            TetMeasures::cross(ra, rb, adj0);
-            const double adj1[3] = {-rb[6], -rb[7], -rb[8]};
-            const double* adj2 = ra + 6;
-            const double det0 = TetMeasures::dot(e0, adj0);
-            const double scale2 = std::max({s0, ra[12], rb[12]});
-            double J = -1, a2 = -1;
-            if (det0*det0 > 1e-28*scale2*scale2*scale2)
-            {
-                // E = (f0, fa, fb): det E = fb . (f0 x fa)
-                J = TetMeasures::dot(rb + 3, ra + 9)/det0;
-                a2 = 0;
-                for (int r = 0; r < 3; ++r)
-                {
-                    for (int c = 0; c < 3; ++c)
-                    {
-                        const double v = f0[r]*adj0[c] + ra[3 + r]*adj1[c] + rb[3 + r]*adj2[c];
-                        a2 += v*v;
-                    }
-                }
-                a2 /= det0*det0;
-            }
-            worst.add(J, a2);
+            batch.set(t, e0, ea, eb, f0, fa, fb);
         }
     }
-    return worst.quality();
 }
 
 
-void CellQualityScan::measure(const double* p, double* q) const
+void CellQualityScan::measure(const double* p, double* q, const bool wide) const
 {
     const long nPoints = long(pointIds_.size());
     std::vector<double> x(3*pointIds_.size());
-    const long n = long(size());
+    const std::size_t n = size();
+    const double* x0 = points0_.data();
+
+    // Cells in blocks: the prisms into a PrismBatch, the tetrahedra of the
+    // others into a TetBatch (a tetrahedral cell: one, with its own A: every
+    // tetrahedron of its decomposition is an affine image of it), each
+    // measured in SIMD lanes; then each cell's worst (TetMeasures::Worst)
+    constexpr std::size_t blockCells = 32;
+    const long nBlocks = long((n + blockCells - 1)/blockCells);
     #pragma omp parallel
     {
         #pragma omp for schedule(static)
@@ -168,11 +99,94 @@ void CellQualityScan::measure(const double* p, double* q) const
             x[3*i + 1] = y[1];
             x[3*i + 2] = y[2];
         }
-        std::vector<double> buf, pointBuf;
-        #pragma omp for schedule(static, 256)
-        for (long i = 0; i < n; ++i)
+        TetBatch tets;
+        PrismBatch prisms;
+        std::vector<double> buf;
+        std::size_t first[blockCells];
+        #pragma omp for schedule(static, 8)
+        for (long b = 0; b < nBlocks; ++b)
         {
-            q[order_[i]] = cellQuality(std::size_t(i), x.data(), buf, pointBuf);
+            const std::size_t i0 = std::size_t(b)*blockCells;
+            const std::size_t m = std::min(blockCells, n - i0);
+            std::size_t nTets = 0, nPrisms = 0;
+            for (std::size_t c = 0; c < m; ++c)
+            {
+                const std::size_t i = i0 + c;
+                if (kind_[i] == prism)
+                {
+                    first[c] = nPrisms++;
+                }
+                else
+                {
+                    first[c] = nTets;
+                    nTets += kind_[i] == tetrahedron ? 1 : tetCount(std::size_t(slot_[i]));
+                }
+            }
+            tets.resize(nTets);
+            prisms.resize(nPrisms);
+            for (std::size_t c = 0; c < m; ++c)
+            {
+                const std::size_t i = i0 + c;
+                const int* v = vertices_.data() + slot_[i];
+                if (kind_[i] == prism)
+                {
+                    prisms.set(first[c], x0, x.data(), v);
+                }
+                else if (kind_[i] == tetrahedron)
+                {
+                    double e[3][3], f[3][3];
+                    for (int k = 0; k < 3; ++k)
+                    {
+                        for (int d = 0; d < 3; ++d)
+                        {
+                            e[k][d] = x0[3*v[k + 1] + d] - x0[3*v[0] + d];
+                            f[k][d] = x[3*v[k + 1] + d] - x[3*v[0] + d];
+                        }
+                    }
+                    tets.set(first[c], e[0], e[1], e[2], f[0], f[1], f[2]);
+                }
+                else
+                {
+                    addTets(std::size_t(slot_[i]), x.data(), tets, first[c], buf);
+                }
+            }
+            if (nTets) tets.measure(metric_, wide);
+            if (nPrisms) prisms.measure(metric_, wide);
+
+            for (std::size_t c = 0; c < m; ++c)
+            {
+                const std::size_t i = i0 + c;
+                TetMeasures::Worst worst(metric_);
+                if (kind_[i] != prism)
+                {
+                    const std::size_t t1 =
+                        first[c]
+                      + (kind_[i] == tetrahedron ? 1 : tetCount(std::size_t(slot_[i])));
+                    for (std::size_t t = first[c]; t < t1; ++t)
+                    {
+                        worst.add(tets.J(t), tets.a2(t), tets.key(t));
+                    }
+                    q[order_[i]] = worst.quality();
+                    continue;
+                }
+                const std::size_t pi = first[c];
+                if (!prisms.exact(pi))
+                {
+                    for (int t = 0; t < 18; ++t)
+                    {
+                        worst.add(prisms.tetJ(pi, t), prisms.tetA2(pi, t));
+                    }
+                    q[order_[i]] = worst.quality();
+                }
+                else
+                {
+                    const double qRanked =
+                        prisms.ranked(pi)
+                      ? TetMeasures::quality(prisms.J(pi), prisms.a2(pi), metric_)
+                      : 1e308;
+                    q[order_[i]] = std::min(prisms.other(pi), qRanked);
+                }
+            }
         }
     }
 }

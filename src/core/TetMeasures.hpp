@@ -130,7 +130,13 @@ struct TetMeasures
 
         inline void add(const double J, const double a2)
         {
-            const double key = (J > 0 && a2 > 0) ? rankKey(J, a2, metric_) : 0;
+            add(J, a2, (J > 0 && a2 > 0) ? rankKey(J, a2, metric_) : 0);
+        }
+
+        //- Add with its key computed already (rankKey, or 0: rank by the
+        //  quality)
+        inline void add(const double J, const double a2, const double key)
+        {
             if (key > 1e-250 && key < 1e250)
             {
                 if (key < bestKey_)

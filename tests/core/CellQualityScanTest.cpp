@@ -26,9 +26,18 @@ struct HexBlock
     std::vector<std::size_t> cellStart{0}, faceStart{0};
     std::vector<int> cellFaces, facePoints;
 
-    //- tets: each cube as the six tetrahedra around its diagonal (Kuhn),
-    //  each tetrahedron its four triangles
-    explicit HexBlock(int nn, bool tets = false) : n(nn)
+    //- How each cube is split: not (a hexahedron), into the six
+    //  tetrahedra around its diagonal (Kuhn; each its four triangles), into
+    //  two triangular prisms (faces in varying order, orientation and first
+    //  point), or cube by cube into each of these in turn (mixed)
+    enum class Split { none, tets, prisms, mixed };
+
+    explicit HexBlock(int nn, bool tets = false)
+    :
+        HexBlock(nn, tets ? Split::tets : Split::none)
+    {}
+
+    HexBlock(int nn, Split split) : n(nn)
     {
         for (int k = 0; k <= n; ++k)
             for (int j = 0; j <= n; ++j)
@@ -41,9 +50,17 @@ struct HexBlock
             for (int j = 0; j < n; ++j)
                 for (int i = 0; i < n; ++i)
                 {
-                    if (tets)
+                    const int cube = i + n*(j + n*k);
+                    const Split as =
+                        split == Split::mixed ? Split(cube % 3) : split;
+                    if (as == Split::tets)
                     {
                         addKuhnTets(id, i, j, k);
+                        continue;
+                    }
+                    if (as == Split::prisms)
+                    {
+                        addPrisms(id, i, j, k, cube);
                         continue;
                     }
                     const int v[8] =
@@ -81,6 +98,38 @@ struct HexBlock
             for (const auto& face : f)
             {
                 for (const int c : face) facePoints.push_back(t[c]);
+                faceStart.push_back(facePoints.size());
+                cellFaces.push_back(int(faceStart.size()) - 2);
+            }
+            cellStart.push_back(cellFaces.size());
+        }
+    }
+
+    template<class Id>
+    void addPrisms(const Id& id, int i, int j, int k, int cube)
+    {
+        // the x-y square split along a diagonal, extruded in z
+        const int lo[2][3] =
+        {
+            {id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k)},
+            {id(i, j, k), id(i + 1, j + 1, k), id(i, j + 1, k)}
+        };
+        for (int h = 0; h < 2; ++h)
+        {
+            const int a = lo[h][0], b = lo[h][1], c = lo[h][2];
+            const int up = (n + 1)*(n + 1);
+            std::vector<std::vector<int>> f =
+            {
+                {a, c, b}, {a + up, b + up, c + up}, {a, b, b + up, a + up},
+                {b, c, c + up, b + up}, {c, a, a + up, c + up}
+            };
+            // vary the order of the faces, their orientation and first point
+            std::rotate(f.begin(), f.begin() + (cube + h) % 5, f.end());
+            for (std::size_t q = 0; q < f.size(); ++q)
+            {
+                if ((cube + q) % 2) std::reverse(f[q].begin(), f[q].end());
+                std::rotate(f[q].begin(), f[q].begin() + (cube + h + q) % f[q].size(), f[q].end());
+                for (const int p : f[q]) facePoints.push_back(p);
                 faceStart.push_back(facePoints.size());
                 cellFaces.push_back(int(faceStart.size()) - 2);
             }
@@ -325,6 +374,90 @@ TEST(CellQualityScan, DegenerateReferenceCellsAreOne)
     // a flat reference block: every tetrahedron degenerate, quality 1
     // (TetQuality's convention) whatever the deformation
     HexBlock b(2);
+    for (std::size_t i = 2; i < b.points.size(); i += 3) b.points[i] = 0;
+    const std::vector<double> p(deformed(b.points, 0.3, 17));
+    const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
+    std::vector<double> q(scan.size());
+    scan.measure(p.data(), q.data());
+    for (std::size_t c = 0; c < q.size(); ++c)
+    {
+        EXPECT_EQ(b.reference(c, p, TetQuality::Metric::sizeShape), 1.0);
+        EXPECT_EQ(q[c], 1.0) << c;
+    }
+}
+
+
+TEST(CellQualityScan, PrismCellsEqualTheDecomposition)
+{
+    // 2 x 6^3 prisms, faces in every order, orientation and first point,
+    // some inverted: the prism kernel (one prism per SIMD lane) equals the
+    // minimum over the 18 tetrahedra of the decomposition
+    const HexBlock b(6, HexBlock::Split::prisms);
+    expectTheDecomposition(b, deformed(b.points, 0.45, 7), 2*216);
+}
+
+
+TEST(CellQualityScan, MixedCellsEachInItsPlace)
+{
+    // hexahedra, tetrahedra and prisms in turn (three paths, one Morton
+    // order): every value where the caller's cell is (a wrong scatter
+    // fails)
+    const HexBlock b(6, HexBlock::Split::mixed);
+    expectTheDecomposition(b, deformed(b.points, 0.45, 9), 72 + 6*72 + 2*72);
+}
+
+
+TEST(CellQualityScan, SimdBuildsBitIdentical)
+{
+    // the AVX2 build (where the processor has it) and the default one: no
+    // contraction, the same values to the last bit
+    const HexBlock b(8, HexBlock::Split::mixed);
+    const std::vector<double> p(deformed(b.points, 0.3, 21));
+    for (const auto m : {TetQuality::Metric::sizeShape, TetQuality::Metric::size,
+                         TetQuality::Metric::shape})
+    {
+        const CellQualityScan scan(b.scan(m));
+        std::vector<double> wide(scan.size()), narrow(scan.size());
+        scan.measure(p.data(), wide.data(), true);
+        scan.measure(p.data(), narrow.data(), false);
+        EXPECT_EQ(wide, narrow);
+    }
+}
+
+
+TEST(CellQualityScan, ExtremePrismsAndTetrahedraCompareByTheirQuality)
+{
+    // prisms and tetrahedra flattened to J = 1e-45 or stretched 1e30 times
+    // (beyond the SIMD kernels' key range: the scalar path), then sheared
+    // so that the tetrahedra differ: uniform in z, so no value is round-off
+    // (a cell flattened on one side only is: its J's are then noise)
+    for (const auto split : {HexBlock::Split::prisms, HexBlock::Split::tets})
+    {
+        const HexBlock b(2, split);
+        for (const double factor : {1e-45, 1e30})
+        {
+            std::vector<double> p(b.points);
+            for (std::size_t i = 0; i < p.size()/3; ++i)
+            {
+                p[3*i + 2] *= factor;
+                p[3*i] += 0.2*p[3*i + 1]*p[3*i + 1];
+            }
+            const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
+            std::vector<double> q(scan.size());
+            scan.measure(p.data(), q.data());
+            for (std::size_t c = 0; c < q.size(); ++c)
+            {
+                const double ref = b.reference(c, p, TetQuality::Metric::sizeShape);
+                EXPECT_NEAR(q[c], ref, 1e-10*std::abs(ref) + 1e-300) << c << ' ' << factor;
+            }
+        }
+    }
+}
+
+
+TEST(CellQualityScan, DegenerateReferencePrismsAreOne)
+{
+    HexBlock b(2, HexBlock::Split::prisms);
     for (std::size_t i = 2; i < b.points.size(); i += 3) b.points[i] = 0;
     const std::vector<double> p(deformed(b.points, 0.3, 17));
     const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));

@@ -1,0 +1,184 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+#include "PrismBatch.hpp"
+
+#include "TetKernel.hpp"
+
+#include <algorithm>
+
+namespace dcprbf
+{
+
+namespace
+{
+
+//- What TetMeasures::Worst keeps, as lane values (selects only)
+struct Worst
+{
+    double J = 1, a2 = 3, key = 1e308, other = 1e308, beyond = 0;
+};
+
+
+//- A point, scalarised by the compiler (no array in the SIMD loop)
+struct V3
+{
+    double x, y, z;
+};
+
+DCPRBF_ALWAYS_INLINE V3 operator+(const V3& a, const V3& b)
+{
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+
+DCPRBF_ALWAYS_INLINE V3 operator-(const V3& a, const V3& b)
+{
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+
+DCPRBF_ALWAYS_INLINE V3 operator/(const V3& a, const double b)
+{
+    return {a.x/b, a.y/b, a.z/b};
+}
+
+
+//- Tetrahedron (cell centre, face centre, a, b): reference edges from the
+//  reference cell centre c0, current from c
+template<int M>
+DCPRBF_ALWAYS_INLINE void addTet
+(
+    Worst& w,
+    double* o,
+    const std::size_t s,
+    const int t,
+    const V3& c0, const V3& f0, const V3& a0, const V3& b0,
+    const V3& c, const V3& f, const V3& a, const V3& b
+)
+{
+    const V3 e0 = f0 - c0, ea = a0 - c0, eb = b0 - c0;
+    const V3 g0 = f - c, ga = a - c, gb = b - c;
+    double J, a2;
+    tetKernel::measures
+    (
+        e0.x, e0.y, e0.z, ea.x, ea.y, ea.z, eb.x, eb.y, eb.z,
+        g0.x, g0.y, g0.z, ga.x, ga.y, ga.z, gb.x, gb.y, gb.z,
+        J, a2
+    );
+    const double k = tetKernel::key<M>(J, a2);
+    o[(5 + 2*t)*s] = J;
+    o[(6 + 2*t)*s] = a2;
+
+    // ranked (TetMeasures::Worst: key in (1e-250, 1e250); keys are <= 1)
+    const double kk = k > 1e-250 ? k : 1e308;
+    const double key0 = w.key;
+    w.J = kk < key0 ? J : w.J;
+    w.a2 = kk < key0 ? a2 : w.a2;
+    w.key = kk < key0 ? kk : key0;
+
+    // inverted (quality J) or degenerate reference (quality 1)
+    double q = J > 0 ? 1e308 : J;
+    q = a2 < 0 ? 1.0 : q;
+    w.other = q < w.other ? q : w.other;
+
+    // positive J beyond the key's range (the scalar path's), counted (a
+    // ranked key implies J > 0; as a sum: a max of selects made GCC 12 fail)
+    w.beyond += (J > 0 ? 1.0 : 0.0) - (k > 1e-250 ? 1.0 : 0.0);
+}
+
+
+//- A prism's 18 tetrahedra into w (each one's J and a2 into o, s apart,
+//  from o[5 s]): vertices v0 .. v5 (reference r, current
+//  c); face centres (vertex averages) and the cell centre (the average of
+//  the face centres)
+template<int M>
+DCPRBF_ALWAYS_INLINE void addPrism
+(
+    Worst& w,
+    double* o,
+    const std::size_t s,
+    const V3& r0, const V3& r1, const V3& r2, const V3& r3, const V3& r4, const V3& r5,
+    const V3& c0, const V3& c1, const V3& c2, const V3& c3, const V3& c4, const V3& c5
+)
+{
+    // faces: bottom, top, quads (0 1 4 3), (1 2 5 4), (2 0 3 5)
+    const V3 rb = (r0 + r1 + r2)/3, rt = (r3 + r4 + r5)/3;
+    const V3 rq0 = (r0 + r1 + r4 + r3)/4, rq1 = (r1 + r2 + r5 + r4)/4, rq2 = (r2 + r0 + r3 + r5)/4;
+    const V3 rc = (rb + rt + rq0 + rq1 + rq2)/5;
+    const V3 cb = (c0 + c1 + c2)/3, ct = (c3 + c4 + c5)/3;
+    const V3 cq0 = (c0 + c1 + c4 + c3)/4, cq1 = (c1 + c2 + c5 + c4)/4, cq2 = (c2 + c0 + c3 + c5)/4;
+    const V3 cc = (cb + ct + cq0 + cq1 + cq2)/5;
+
+    addTet<M>(w, o, s, 0, rc, rb, r0, r1, cc, cb, c0, c1);
+    addTet<M>(w, o, s, 1, rc, rb, r1, r2, cc, cb, c1, c2);
+    addTet<M>(w, o, s, 2, rc, rb, r2, r0, cc, cb, c2, c0);
+    addTet<M>(w, o, s, 3, rc, rt, r3, r4, cc, ct, c3, c4);
+    addTet<M>(w, o, s, 4, rc, rt, r4, r5, cc, ct, c4, c5);
+    addTet<M>(w, o, s, 5, rc, rt, r5, r3, cc, ct, c5, c3);
+    addTet<M>(w, o, s, 6, rc, rq0, r0, r1, cc, cq0, c0, c1);
+    addTet<M>(w, o, s, 7, rc, rq0, r1, r4, cc, cq0, c1, c4);
+    addTet<M>(w, o, s, 8, rc, rq0, r4, r3, cc, cq0, c4, c3);
+    addTet<M>(w, o, s, 9, rc, rq0, r3, r0, cc, cq0, c3, c0);
+    addTet<M>(w, o, s, 10, rc, rq1, r1, r2, cc, cq1, c1, c2);
+    addTet<M>(w, o, s, 11, rc, rq1, r2, r5, cc, cq1, c2, c5);
+    addTet<M>(w, o, s, 12, rc, rq1, r5, r4, cc, cq1, c5, c4);
+    addTet<M>(w, o, s, 13, rc, rq1, r4, r1, cc, cq1, c4, c1);
+    addTet<M>(w, o, s, 14, rc, rq2, r2, r0, cc, cq2, c2, c0);
+    addTet<M>(w, o, s, 15, rc, rq2, r0, r3, cc, cq2, c0, c3);
+    addTet<M>(w, o, s, 16, rc, rq2, r3, r5, cc, cq2, c3, c5);
+    addTet<M>(w, o, s, 17, rc, rq2, r5, r2, cc, cq2, c5, c2);
+}
+
+
+struct Kernel
+{
+template<int M>
+static DCPRBF_ALWAYS_INLINE void run
+(
+    const std::size_t n,
+    const std::size_t s,
+    const double* __restrict in,
+    double* __restrict out
+)
+{
+    #pragma omp simd
+    for (std::size_t p = 0; p < n; ++p)
+    {
+        const double* v = in + p;
+        #define DCPRBF_V3(k) V3{v[(3*(k))*s], v[(3*(k) + 1)*s], v[(3*(k) + 2)*s]}
+        Worst w;
+        addPrism<M>
+        (
+            w, out + p, s,
+            DCPRBF_V3(0), DCPRBF_V3(1), DCPRBF_V3(2), DCPRBF_V3(3), DCPRBF_V3(4), DCPRBF_V3(5),
+            DCPRBF_V3(6), DCPRBF_V3(7), DCPRBF_V3(8), DCPRBF_V3(9), DCPRBF_V3(10), DCPRBF_V3(11)
+        );
+        #undef DCPRBF_V3
+        out[p] = w.J;
+        out[s + p] = w.a2;
+        out[2*s + p] = w.key;
+        out[3*s + p] = w.other;
+        out[4*s + p] = w.beyond;
+    }
+}
+};
+
+} // namespace
+
+
+void PrismBatch::resize(const std::size_t n)
+{
+    n_ = n;
+    if (n > stride_)
+    {
+        // room rounded up to 8: aligned rows for any vector width
+        stride_ = (std::max(n, 2*stride_) + 7)/8*8;
+        data_.assign(36*stride_, 0.0);
+        out_.assign(41*stride_, 0.0);
+    }
+}
+
+
+void PrismBatch::measure(const TetQuality::Metric metric, const bool wide)
+{
+    tetKernel::dispatch<Kernel>(metric, wide, n_, stride_, data_.data(), out_.data());
+}
+
+} // namespace dcprbf

@@ -1,0 +1,64 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+#include "TetBatch.hpp"
+
+#include "TetKernel.hpp"
+
+#include <algorithm>
+
+namespace dcprbf
+{
+
+namespace
+{
+
+struct Kernel
+{
+template<int M>
+static DCPRBF_ALWAYS_INLINE void run
+(
+    const std::size_t n,
+    const std::size_t s,
+    const double* __restrict in,
+    double* __restrict out
+)
+{
+    #pragma omp simd
+    for (std::size_t t = 0; t < n; ++t)
+    {
+        const double* c = in + t;
+        double J, a2;
+        tetKernel::measures
+        (
+            c[0], c[s], c[2*s], c[3*s], c[4*s], c[5*s], c[6*s], c[7*s], c[8*s],
+            c[9*s], c[10*s], c[11*s], c[12*s], c[13*s], c[14*s], c[15*s], c[16*s], c[17*s],
+            J, a2
+        );
+        out[t] = J;
+        out[s + t] = a2;
+        out[2*s + t] = tetKernel::key<M>(J, a2);
+    }
+}
+};
+
+} // namespace
+
+
+void TetBatch::resize(const std::size_t n)
+{
+    n_ = n;
+    if (n > stride_)
+    {
+        // room rounded up to 8: aligned rows for any vector width
+        stride_ = (std::max(n, 2*stride_) + 7)/8*8;
+        data_.assign(18*stride_, 0.0);
+        out_.assign(3*stride_, 0.0);
+    }
+}
+
+
+void TetBatch::measure(const TetQuality::Metric metric, const bool wide)
+{
+    tetKernel::dispatch<Kernel>(metric, wide, n_, stride_, data_.data(), out_.data());
+}
+
+} // namespace dcprbf

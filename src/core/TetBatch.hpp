@@ -1,0 +1,76 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+// dcpRBF numerical core: the measures of many tetrahedra at once, laid out
+// for SIMD (CellQualityScan's inner loop).
+//
+// A tetrahedron is given by its edge columns from one vertex, reference
+// (e0, ea, eb) and current (f0, fa, fb): E0 = (e0 ea eb), E = (f0 fa fb),
+// A = E E0^-1. measure() computes for every tetrahedron J = det A and
+// |A|_F^2 as TetMeasures::measures does (E0^-1 det0 by cross products;
+// a degenerate reference, det0^2 <= 1e-28 max|e|^6, gives J = a2 = -1), and
+// TetMeasures::rankKey where J and a2 are in a range where the key neither
+// overflows nor traps (else key 0: the caller ranks by the quality itself).
+// The loop has no branch and no division by zero or overflow in any lane
+// (OpenFOAM traps floating-point exceptions), so it vectorizes; on x86-64
+// with GCC it is compiled for AVX2 as well and picked at run time. No
+// floating-point contraction: each tetrahedron's values are the same in
+// the vector body, its remainder and either build (bit-identical results
+// whatever the batch or thread count).
+#pragma once
+
+#include "TetQuality.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace dcprbf
+{
+
+class TetBatch
+{
+public:
+    //- Room for n tetrahedra (their values undefined until set)
+    void resize(std::size_t n);
+
+    //- Number of tetrahedra
+    std::size_t size() const { return n_; }
+
+    //- Tetrahedron t: reference and current edge columns (x y z each)
+    inline void set
+    (
+        const std::size_t t,
+        const double* e0, const double* ea, const double* eb,
+        const double* f0, const double* fa, const double* fb
+    )
+    {
+        double* c = data_.data() + t;
+        const double* cols[6] = {e0, ea, eb, f0, fa, fb};
+        for (int k = 0; k < 6; ++k)
+        {
+            for (int d = 0; d < 3; ++d)
+            {
+                c[(3*k + d)*stride_] = cols[k][d];
+            }
+        }
+    }
+
+    //- J, |A|_F^2 and the rank key of every tetrahedron
+    //  (wide false: the default-target build even where AVX2 is there;
+    //  the values are the same)
+    void measure(TetQuality::Metric metric, bool wide = true);
+
+    double J(const std::size_t t) const { return out_[t]; }
+    double a2(const std::size_t t) const { return out_[stride_ + t]; }
+    double key(const std::size_t t) const { return out_[2*stride_ + t]; }
+
+private:
+    //- Number of tetrahedra, room per component
+    std::size_t n_ = 0, stride_ = 0;
+
+    //- 18 components (e0 ea eb f0 fa fb, x y z each), stride_ apart
+    std::vector<double> data_;
+
+    //- J, a2, key, stride_ apart
+    std::vector<double> out_;
+};
+
+} // namespace dcprbf

@@ -1,0 +1,190 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+// dcpRBF numerical core: the tetrahedron measures of TetMeasures written for
+// SIMD loops (TetBatch, PrismBatch): no branch, no division by zero and no
+// overflow in any lane, only selects of computed values.
+//
+// Include only in the kernels' .cpp files: on x86-64 with GCC it switches
+// off -ftrapping-math for the rest of the file (GCC vectorizes a select of
+// floating-point values only when told that the operations do not trap;
+// none here does: every operation is computed in every lane with safe
+// operands and only results are selected). No other effect: no
+// reassociation, no contraction, IEEE results, the same in a vector body,
+// its remainder and either build.
+//
+// dispatch<Kernel> runs Kernel::run<M> (M: the metric as a template
+// argument) compiled for AVX2 where the processor has it (GCC on x86-64;
+// a target attribute, not target_clones, which GCC 12 fails to compile on
+// these loops), else for the default target.
+#pragma once
+
+#include "TetQuality.hpp"
+
+#include <cstddef>
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+    #pragma GCC optimize("no-trapping-math")
+    #define DCPRBF_AVX2 1
+#else
+    #define DCPRBF_AVX2 0
+#endif
+#if defined(__GNUC__)
+    #define DCPRBF_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+    #define DCPRBF_ALWAYS_INLINE inline
+#endif
+
+namespace dcprbf
+{
+namespace tetKernel
+{
+
+//- The metric as a template argument (one loop per metric)
+constexpr int sizeShape = int(TetQuality::Metric::sizeShape);
+constexpr int size = int(TetQuality::Metric::size);
+constexpr int shape = int(TetQuality::Metric::shape);
+
+//- J and |A|_F^2 of the tetrahedron with reference edge columns e0 ea eb and
+//  current f0 fa fb (A = E E0^-1); a degenerate reference (det0^2 <= 1e-28
+//  max|e|^6) gives J = a2 = -1 (TetMeasures::measures)
+DCPRBF_ALWAYS_INLINE void measures
+(
+    const double e0x, const double e0y, const double e0z,
+    const double eax, const double eay, const double eaz,
+    const double ebx, const double eby, const double ebz,
+    const double f0x, const double f0y, const double f0z,
+    const double fax, const double fay, const double faz,
+    const double fbx, const double fby, const double fbz,
+    double& J,
+    double& a2
+)
+{
+    // E0^-1 det0 = rows (ea x eb, eb x e0, e0 x ea)
+    const double p0 = eay*ebz - eaz*eby, p1 = eaz*ebx - eax*ebz, p2 = eax*eby - eay*ebx;
+    const double q0 = eby*e0z - ebz*e0y, q1 = ebz*e0x - ebx*e0z, q2 = ebx*e0y - eby*e0x;
+    const double r0 = e0y*eaz - e0z*eay, r1 = e0z*eax - e0x*eaz, r2 = e0x*eay - e0y*eax;
+    const double det0 = e0x*p0 + e0y*p1 + e0z*p2;
+    const double l0 = e0x*e0x + e0y*e0y + e0z*e0z;
+    const double la = eax*eax + eay*eay + eaz*eaz;
+    const double lb = ebx*ebx + eby*eby + ebz*ebz;
+    const double l0a = l0 > la ? l0 : la;
+    const double s2 = l0a > lb ? l0a : lb;
+    const bool valid = det0*det0 > 1e-28*s2*s2*s2;
+    const double d = valid ? det0 : 1.0;
+
+    // det E = f0 . (fa x fb)
+    const double detE =
+        f0x*(fay*fbz - faz*fby) + f0y*(faz*fbx - fax*fbz) + f0z*(fax*fby - fay*fbx);
+
+    // |E adj|_F^2: (E adj)_rc = f0_r p_c + fa_r q_c + fb_r r_c
+    const double m00 = f0x*p0 + fax*q0 + fbx*r0;
+    const double m01 = f0x*p1 + fax*q1 + fbx*r1;
+    const double m02 = f0x*p2 + fax*q2 + fbx*r2;
+    const double m10 = f0y*p0 + fay*q0 + fby*r0;
+    const double m11 = f0y*p1 + fay*q1 + fby*r1;
+    const double m12 = f0y*p2 + fay*q2 + fby*r2;
+    const double m20 = f0z*p0 + faz*q0 + fbz*r0;
+    const double m21 = f0z*p1 + faz*q1 + fbz*r1;
+    const double m22 = f0z*p2 + faz*q2 + fbz*r2;
+    const double sum =
+        m00*m00 + m01*m01 + m02*m02
+      + m10*m10 + m11*m11 + m12*m12
+      + m20*m20 + m21*m21 + m22*m22;
+
+    const double Jd = detE/d, a2d = sum/(d*d);
+    J = valid ? Jd : -1.0;
+    a2 = valid ? a2d : -1.0;
+}
+
+
+//- TetMeasures::rankKey for metric M where J is in (1e-30, 1e30) and
+//  a2 in (0, 1e25) (a2 >= 3 J^(2/3) there), 0 elsewhere (rank by the
+//  quality). The excluded lanes compute with 1s: nothing traps.
+template<int M>
+DCPRBF_ALWAYS_INLINE double key(const double J, const double a2)
+{
+    // one comparison per select (vectorizes on any SIMD width)
+    double j = J > 1e-30 ? J : 1.0;
+    j = j < 1e30 ? j : 1.0;
+    double a = a2 > 0 ? a2 : 1.0;
+    a = a < 1e25 ? a : 1.0;
+    double k;
+    if (M == size)
+    {
+        const double r = 1.0/j;
+        k = j < r ? j : r;
+    }
+    else if (M == shape)
+    {
+        k = 27.0*j*j/(a*a*a);
+    }
+    else
+    {
+        const double a6 = a*a*a;
+        const double j4 = (j*j)*(j*j);
+        const double j7 = j4*(j*j*j);
+        k = 729.0*(j < 1 ? j7 : j)/(a6*a6);
+    }
+    k = J > 1e-30 ? k : 0.0;
+    k = J < 1e30 ? k : 0.0;
+    k = a2 > 0 ? k : 0.0;
+    return a2 < 1e25 ? k : 0.0;
+}
+
+//- Kernel::run<M>(args) for the metric
+template<class Kernel, class... Args>
+DCPRBF_ALWAYS_INLINE void byMetric(const TetQuality::Metric metric, Args... args)
+{
+    switch (metric)
+    {
+        case TetQuality::Metric::size: Kernel::template run<size>(args...); break;
+        case TetQuality::Metric::shape: Kernel::template run<shape>(args...); break;
+        default: Kernel::template run<sizeShape>(args...); break;
+    }
+}
+
+#if DCPRBF_AVX2
+template<class Kernel, class... Args>
+__attribute__((target("avx2"))) void byMetricAvx2
+(
+    const TetQuality::Metric metric,
+    Args... args
+)
+{
+    byMetric<Kernel>(metric, args...);
+}
+#endif
+
+template<class Kernel, class... Args>
+void byMetricDefault(const TetQuality::Metric metric, Args... args)
+{
+    byMetric<Kernel>(metric, args...);
+}
+
+//- Has the processor AVX2 (and is this a build that can use it)?
+inline bool hasAvx2()
+{
+    #if DCPRBF_AVX2
+    static const bool has = []{ __builtin_cpu_init(); return __builtin_cpu_supports("avx2") != 0; }();
+    return has;
+    #else
+    return false;
+    #endif
+}
+
+//- Kernel::run<metric>(args): the AVX2 build if wide and the processor has
+//  it, else the default one (the same values: no contraction)
+template<class Kernel, class... Args>
+void dispatch(const TetQuality::Metric metric, const bool wide, Args... args)
+{
+    #if DCPRBF_AVX2
+    if (wide && hasAvx2())
+    {
+        byMetricAvx2<Kernel>(metric, args...);
+        return;
+    }
+    #endif
+    byMetricDefault<Kernel>(metric, args...);
+}
+
+} // namespace tetKernel
+} // namespace dcprbf
