@@ -17,7 +17,10 @@ Description
 
 void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
 {
-    lastPoints_ = curPoints();
+    {
+        tmp<pointField> tp(curPoints());
+        lastPoints_.transfer(tp.ref());
+    }
     lastQuality_ =
         region_.measure(lastPoints_, max(label(1), settings_.selection().nSwap));
     r.nCells = lastQuality_.nCells;

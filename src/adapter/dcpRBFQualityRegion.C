@@ -109,18 +109,10 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
 {
     scalarField q(quality(p));
 
-    summary s;
-    s.nCells = size();
-    s.nInverted = returnReduce
-    (
-        label(std::count_if(q.begin(), q.end(), [](scalar x) { return x <= 0; })),
-        sumOp<label>()
-    );
-    s.minQuality = s.nCells ? gMin(q) : 1;
-    s.meanQuality = s.nCells ? gSum(q)/s.nCells : 1;
-
-    // Local candidates (the n lowest and n highest, in one pass over the
-    // positions, kept sorted), then the global n worst and n best
+    // Per block of cells (fixed, whatever the thread count: the sum and
+    // so the mean are the same on any number of threads): the number
+    // inverted, the least, the sum and the n lowest and n highest (kept
+    // sorted, in one pass over the block); then the blocks in order
     const auto ranked = [&](const label i)
     {
         return rankedCell({q[i], centres_[i][0], centres_[i][1], centres_[i][2]});
@@ -131,7 +123,6 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     };
     const auto higher = [&](const label a, const label b) { return lower(b, a); };
     const label nLocal = min(n, q.size());
-    std::vector<label> lowestAt, highestAt;
     const auto keep = [nLocal](std::vector<label>& kept, const label i, const auto& before)
     {
         if (label(kept.size()) < nLocal || before(i, kept.back()))
@@ -140,11 +131,51 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
             if (label(kept.size()) > nLocal) kept.pop_back();
         }
     };
-    for (label i = 0; nLocal > 0 && i < q.size(); ++i)
+    struct block
     {
-        keep(lowestAt, i, lower);
-        keep(highestAt, i, higher);
+        label nInverted = 0;
+        scalar least = GREAT, sum = 0;
+        std::vector<label> lowestAt, highestAt;
+    };
+    constexpr label blockSize = 16384;
+    const label nBlocks = (q.size() + blockSize - 1)/blockSize;
+    std::vector<block> blocks(nBlocks);
+    #pragma omp parallel for schedule(static)
+    for (label bi = 0; bi < nBlocks; ++bi)
+    {
+        block& b = blocks[bi];
+        const label i1 = min(q.size(), (bi + 1)*blockSize);
+        for (label i = bi*blockSize; i < i1; ++i)
+        {
+            b.nInverted += (q[i] <= 0);
+            b.least = min(b.least, q[i]);
+            b.sum += q[i];
+            if (nLocal > 0)
+            {
+                keep(b.lowestAt, i, lower);
+                keep(b.highestAt, i, higher);
+            }
+        }
     }
+    label nInverted = 0;
+    scalar least = GREAT, sum = 0;
+    std::vector<label> lowestAt, highestAt;
+    for (const block& b : blocks)
+    {
+        nInverted += b.nInverted;
+        least = min(least, b.least);
+        sum += b.sum;
+        for (const label i : b.lowestAt) keep(lowestAt, i, lower);
+        for (const label i : b.highestAt) keep(highestAt, i, higher);
+    }
+
+    summary s;
+    s.nCells = size();
+    s.nInverted = returnReduce(nInverted, sumOp<label>());
+    s.minQuality = s.nCells ? returnReduce(least, minOp<scalar>()) : 1;
+    s.meanQuality = s.nCells ? returnReduce(sum, sumOp<scalar>())/s.nCells : 1;
+
+    // The global n worst and n best
     std::vector<rankedCell> lowest, highest;
     for (const label i : lowestAt) lowest.push_back(ranked(i));
     for (const label i : highestAt) highest.push_back(ranked(i));
