@@ -101,6 +101,7 @@ void CellQualityScan::measure(const double* p, double* q, const bool wide) const
         }
         TetBatch tets;
         PrismBatch prisms;
+        WorstBatch finals(metric_, wide);
         std::vector<double> buf;
         std::size_t first[blockCells];
         #pragma omp for schedule(static, 8)
@@ -166,27 +167,21 @@ void CellQualityScan::measure(const double* p, double* q, const bool wide) const
                     {
                         worst.add(tets.J(t), tets.a2(t), tets.key(t));
                     }
-                    q[order_[i]] = worst.quality();
-                    continue;
                 }
-                const std::size_t pi = first[c];
-                if (!prisms.exact(pi))
+                else if (!prisms.exact(first[c]))
                 {
                     for (int t = 0; t < 18; ++t)
                     {
-                        worst.add(prisms.tetJ(pi, t), prisms.tetA2(pi, t));
+                        worst.add(prisms.tetJ(first[c], t), prisms.tetA2(first[c], t));
                     }
-                    q[order_[i]] = worst.quality();
                 }
                 else
                 {
-                    const double qRanked =
-                        prisms.ranked(pi)
-                      ? TetMeasures::quality(prisms.J(pi), prisms.a2(pi), metric_)
-                      : 1e308;
-                    q[order_[i]] = std::min(prisms.other(pi), qRanked);
+                    worst = prisms.worst(first[c], metric_);
                 }
+                finals.add(worst, &q[order_[i]]);
             }
+            finals.finish();
         }
     }
 }

@@ -1,5 +1,6 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 #include "PlanarCellQualityScan.hpp"
+#include "TetBatch.hpp"
 #include "TetMeasures.hpp"
 
 #include <algorithm>
@@ -99,7 +100,7 @@ PlanarCellQualityScan::PlanarCellQualityScan
 }
 
 
-double PlanarCellQualityScan::cellQuality(const std::size_t i, const double* x) const
+TetMeasures::Worst PlanarCellQualityScan::cellWorst(const std::size_t i, const double* x) const
 {
     const std::size_t j0 = polygonStart_[i], j1 = polygonStart_[i + 1];
     const double n = double(j1 - j0);
@@ -130,11 +131,11 @@ double PlanarCellQualityScan::cellQuality(const std::size_t i, const double* x) 
         const double f10 = fa[1]*inv[0] + fb[1]*inv[2], f11 = fa[1]*inv[1] + fb[1]*inv[3];
         worst.add(f00*f11 - f01*f10, f00*f00 + f01*f01 + f10*f10 + f11*f11 + 1);
     }
-    return worst.quality();
+    return worst;
 }
 
 
-void PlanarCellQualityScan::measure(const double* p, double* q) const
+void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide) const
 {
     const long nPoints = long(pointIds_.size());
     std::vector<double> x(2*pointIds_.size());
@@ -147,10 +148,17 @@ void PlanarCellQualityScan::measure(const double* p, double* q) const
             x[2*i] = p[3*std::size_t(pointIds_[i]) + axis0_];
             x[2*i + 1] = p[3*std::size_t(pointIds_[i]) + axis1_];
         }
-        #pragma omp for schedule(static, 256)
-        for (long i = 0; i < n; ++i)
+        // the ranked worst's cube roots in SIMD lanes, per block of cells
+        WorstBatch finals(metric_, wide);
+        constexpr long blockCells = 64;
+        #pragma omp for schedule(static, 4)
+        for (long b = 0; b < (n + blockCells - 1)/blockCells; ++b)
         {
-            q[i] = cellQuality(std::size_t(i), x.data());
+            for (long i = b*blockCells; i < std::min(n, (b + 1)*blockCells); ++i)
+            {
+                finals.add(cellWorst(std::size_t(i), x.data()), q + i);
+            }
+            finals.finish();
         }
     }
 }

@@ -19,6 +19,7 @@
 // number of OpenMP threads gives bit-identical values.
 #pragma once
 
+#include "TetMeasures.hpp"
 #include "TetQuality.hpp"
 
 #include <cstddef>
@@ -48,8 +49,9 @@ public:
     std::size_t size() const { return polygonStart_.size() - 1; }
 
     //- Quality of every cell for the points p (x y z per point, indexed
-    //  as the reference points) into q
-    void measure(const double* p, double* q) const;
+    //  as the reference points) into q (wide false: the SIMD cube roots'
+    //  default-target build even where AVX2 is there; the same values)
+    void measure(const double* p, double* q, bool wide = true) const;
 
 private:
     std::vector<std::size_t> polygonStart_;
@@ -66,8 +68,9 @@ private:
     std::vector<double> inverse0_;
     std::vector<char> degenerate_;
 
-    //- Quality of cell i for the compact current in-plane points x
-    double cellQuality(std::size_t i, const double* x) const;
+    //- The worst tetrahedron of cell i for the compact current in-plane
+    //  points x
+    TetMeasures::Worst cellWorst(std::size_t i, const double* x) const;
 };
 
 } // namespace dcprbf

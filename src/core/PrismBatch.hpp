@@ -17,6 +17,7 @@
 // tetrahedra, kept, with TetMeasures::Worst).
 #pragma once
 
+#include "TetMeasures.hpp"
 #include "TetQuality.hpp"
 
 #include <cstddef>
@@ -75,6 +76,12 @@ public:
     //- Prism p: the least quality of its inverted and degenerate
     //  tetrahedra (1e308 if none)
     double other(const std::size_t p) const { return out_[3*stride_ + p]; }
+
+    //- Prism p (exact) as TetMeasures::Worst keeps it
+    TetMeasures::Worst worst(const std::size_t p, const TetQuality::Metric metric) const
+    {
+        return TetMeasures::Worst(metric, J(p), a2(p), ranked(p), other(p));
+    }
 
     //- Prism p: J and |A|_F^2 of its tetrahedron t (0 .. 17; for the
     //  scalar path)

@@ -40,7 +40,40 @@ static DCPRBF_ALWAYS_INLINE void run
 }
 };
 
+struct QualityKernel
+{
+template<int M>
+static DCPRBF_ALWAYS_INLINE void run
+(
+    const std::size_t n,
+    const double* __restrict J,
+    const double* __restrict a2,
+    double* __restrict q
+)
+{
+    #pragma omp simd
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        q[i] = tetKernel::quality<M>(J[i], a2[i]);
+    }
+}
+};
+
 } // namespace
+
+
+void TetBatch::qualities
+(
+    const std::size_t n,
+    const double* J,
+    const double* a2,
+    double* q,
+    const TetQuality::Metric metric,
+    const bool wide
+)
+{
+    tetKernel::dispatch<QualityKernel>(metric, wide, n, J, a2, q);
+}
 
 
 void TetBatch::resize(const std::size_t n)
@@ -59,6 +92,20 @@ void TetBatch::resize(const std::size_t n)
 void TetBatch::measure(const TetQuality::Metric metric, const bool wide)
 {
     tetKernel::dispatch<Kernel>(metric, wide, n_, stride_, data_.data(), out_.data());
+}
+
+void WorstBatch::finish()
+{
+    q_.resize(J_.size());
+    TetBatch::qualities(J_.size(), J_.data(), a2_.data(), q_.data(), metric_, wide_);
+    for (std::size_t i = 0; i < q_.size(); ++i)
+    {
+        *dest_[i] = q_[i] < other_[i] ? q_[i] : other_[i];
+    }
+    J_.clear();
+    a2_.clear();
+    other_.clear();
+    dest_.clear();
 }
 
 } // namespace dcprbf

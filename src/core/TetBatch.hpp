@@ -17,6 +17,7 @@
 // whatever the batch or thread count).
 #pragma once
 
+#include "TetMeasures.hpp"
 #include "TetQuality.hpp"
 
 #include <cstddef>
@@ -58,6 +59,19 @@ public:
     //  the values are the same)
     void measure(TetQuality::Metric metric, bool wide = true);
 
+    //- q[i] = TetMeasures::quality(J[i], a2[i], metric) (to ~1e-15) for
+    //  ranked tetrahedra (J in (1e-30, 1e30), 0 < a2 < 1e25; TetKernel's
+    //  cube root), i < n, in SIMD lanes
+    static void qualities
+    (
+        std::size_t n,
+        const double* J,
+        const double* a2,
+        double* q,
+        TetQuality::Metric metric,
+        bool wide = true
+    );
+
     double J(const std::size_t t) const { return out_[t]; }
     double a2(const std::size_t t) const { return out_[stride_ + t]; }
     double key(const std::size_t t) const { return out_[2*stride_ + t]; }
@@ -71,6 +85,44 @@ private:
 
     //- J, a2, key, stride_ apart
     std::vector<double> out_;
+};
+
+//- Cells' worst tetrahedra (TetMeasures::Worst) to their qualities: the
+//  ranked ones' in SIMD lanes (TetBatch::qualities), the rest (beyond the
+//  lanes' range, none ranked) by Worst::quality(); each into its place
+class WorstBatch
+{
+public:
+    explicit WorstBatch(const TetQuality::Metric metric, const bool wide = true)
+    :
+        metric_(metric),
+        wide_(wide)
+    {}
+
+    //- The quality of w, to be written to *dest by finish()
+    inline void add(const TetMeasures::Worst& w, double* dest)
+    {
+        if (w.ranked() && w.J() >= 1e-30 && w.J() <= 1e30 && w.a2() < 1e25)
+        {
+            J_.push_back(w.J());
+            a2_.push_back(w.a2());
+            other_.push_back(w.other());
+            dest_.push_back(dest);
+        }
+        else
+        {
+            *dest = w.quality();
+        }
+    }
+
+    //- Write the qualities added since the last finish()
+    void finish();
+
+private:
+    TetQuality::Metric metric_;
+    bool wide_;
+    std::vector<double> J_, a2_, other_, q_;
+    std::vector<double*> dest_;
 };
 
 } // namespace dcprbf

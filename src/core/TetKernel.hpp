@@ -4,7 +4,8 @@
 // overflow in any lane, only selects of computed values.
 //
 // Include only in the kernels' .cpp files: on x86-64 with GCC it switches
-// off -ftrapping-math for the rest of the file (GCC vectorizes a select of
+// off -fmath-errno (sqrt vectorizes; errno is never read) and
+// -ftrapping-math for the rest of the file (GCC vectorizes a select of
 // floating-point values only when told that the operations do not trap;
 // none here does: every operation is computed in every lane with safe
 // operands and only results are selected). No other effect: no
@@ -19,10 +20,13 @@
 
 #include "TetQuality.hpp"
 
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-    #pragma GCC optimize("no-trapping-math")
+    #pragma GCC optimize("no-trapping-math", "no-math-errno")
     #define DCPRBF_AVX2 1
 #else
     #define DCPRBF_AVX2 0
@@ -129,6 +133,43 @@ DCPRBF_ALWAYS_INLINE double key(const double J, const double a2)
     k = a2 > 0 ? k : 0.0;
     return a2 < 1e25 ? k : 0.0;
 }
+
+//- The cube root of x in [1e-30, 1e30] to ~1 ulp (std::cbrt is a scalar
+//  libm call): a first guess from the float's bits (exponent / 3, within a
+//  few %), then three Halley steps y (y^3 + 2x)/(2 y^3 + x) (cubic
+//  convergence)
+DCPRBF_ALWAYS_INLINE double cubeRoot(const double x)
+{
+    const float xf = float(x);
+    std::uint32_t i;
+    std::memcpy(&i, &xf, sizeof(i));
+    i = i/3u + 709921077u;
+    float yf;
+    std::memcpy(&yf, &i, sizeof(yf));
+    double y = yf;
+    for (int k = 0; k < 3; ++k)
+    {
+        const double y3 = y*y*y;
+        y = y*(y3 + 2*x)/(2*y3 + x);
+    }
+    return y;
+}
+
+
+//- TetMeasures::quality for metric M where J is in [1e-30, 1e30] and
+//  a2 > 0 (a ranked tetrahedron), with cubeRoot: the same to ~1e-15
+template<int M>
+DCPRBF_ALWAYS_INLINE double quality(const double J, const double a2)
+{
+    const double r = 1.0/J;
+    const double fSize = J < r ? J : r;
+    const double c = cubeRoot(J);
+    const double fShape = 3.0*(c*c)/a2;
+    if (M == size) return fSize;
+    if (M == shape) return fShape;
+    return std::sqrt(fSize)*fShape;
+}
+
 
 //- Kernel::run<M>(args) for the metric
 template<class Kernel, class... Args>

@@ -128,6 +128,24 @@ struct TetMeasures
     public:
         explicit Worst(TetQuality::Metric metric) : metric_(metric) {}
 
+        //- As kept elsewhere (PrismBatch's lanes): the ranked worst (if
+        //  ranked) and the least quality of the others
+        Worst
+        (
+            TetQuality::Metric metric,
+            double J,
+            double a2,
+            bool ranked,
+            double other
+        )
+        :
+            metric_(metric),
+            qOther_(other),
+            bestJ_(J),
+            bestA2_(a2),
+            keyed_(ranked)
+        {}
+
         inline void add(const double J, const double a2)
         {
             add(J, a2, (J > 0 && a2 > 0) ? rankKey(J, a2, metric_) : 0);
@@ -152,6 +170,13 @@ struct TetMeasures
                 qOther_ = std::min(qOther_, TetMeasures::quality(J, a2, metric_));
             }
         }
+
+        //- Was a tetrahedron ranked by its key? The ranked worst's J and
+        //  |A|^2; the least quality of the others (1e308 if none)
+        bool ranked() const { return keyed_; }
+        double J() const { return bestJ_; }
+        double a2() const { return bestA2_; }
+        double other() const { return qOther_; }
 
         //- The worst quality added (1e308 if none)
         inline double quality() const

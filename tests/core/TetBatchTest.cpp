@@ -1,0 +1,64 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+// Unit tests of the SIMD qualities: TetMeasures::quality over the whole
+// ranked range, the same on the AVX2 and the default build.
+#include "TetBatch.hpp"
+#include "TetMeasures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace dcprbf;
+
+TEST(TetBatch, QualitiesEqualTetMeasuresOverTheRankedRange)
+{
+    // J from 1e-30 to 1e30 (log-uniform, and both ends), |A|^2 from its
+    // least, 3 J^(2/3), up to e^8 times that (and below 1e25)
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> logJ(std::log(1e-30), std::log(1e30)), logA(0, 8);
+    std::vector<double> J{1e-30, 1e30, 1.0, 1 - 1e-16, 1 + 1e-15}, a2;
+    for (int i = 0; i < 20000; ++i) J.push_back(std::exp(logJ(gen)));
+    for (const double j : J)
+    {
+        a2.push_back(std::min(1e24, 3*std::cbrt(j*j)*std::exp(logA(gen))));
+    }
+    for (const auto m : {TetQuality::Metric::sizeShape, TetQuality::Metric::size,
+                         TetQuality::Metric::shape})
+    {
+        std::vector<double> wide(J.size()), narrow(J.size());
+        TetBatch::qualities(J.size(), J.data(), a2.data(), wide.data(), m, true);
+        TetBatch::qualities(J.size(), J.data(), a2.data(), narrow.data(), m, false);
+        EXPECT_EQ(wide, narrow);
+        for (std::size_t i = 0; i < J.size(); ++i)
+        {
+            const double ref = TetMeasures::quality(J[i], a2[i], m);
+            EXPECT_NEAR(wide[i], ref, 2e-15*ref) << J[i] << ' ' << a2[i];
+        }
+    }
+}
+
+
+TEST(TetBatch, WorstBatchPutsEachCellsQualityInItsPlace)
+{
+    // ranked cells (SIMD), an inverted one and one beyond the lanes' range
+    // (J = 1e-35: Worst::quality), each written where asked
+    const auto m = TetQuality::Metric::sizeShape;
+    std::vector<TetMeasures::Worst> cells(4, TetMeasures::Worst(m));
+    cells[0].add(0.5, 2.0);
+    cells[0].add(2.0, 4.0);
+    cells[1].add(0.9, 3.0);
+    cells[1].add(-0.2, 1.0);
+    cells[2].add(1e-35, 3e-23);
+    cells[3].add(1.2, 3.5);
+    std::vector<double> q(4, -7);
+    WorstBatch finals(m);
+    for (int i = 3; i >= 0; --i) finals.add(cells[i], &q[i]);
+    finals.finish();
+    for (int i = 0; i < 4; ++i)
+    {
+        EXPECT_NEAR(q[i], cells[i].quality(), 1e-15*std::abs(cells[i].quality())) << i;
+    }
+    EXPECT_EQ(q[1], -0.2);
+}
