@@ -1,5 +1,6 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 #include "PlanarCellQualityScan.hpp"
+#include "PlanarMapBatch.hpp"
 #include "TetBatch.hpp"
 #include "TetMeasures.hpp"
 
@@ -58,17 +59,43 @@ PlanarCellQualityScan::PlanarCellQualityScan
         }
         pi = local[pi];
     }
-    // Per triangle (centre, a, b) the inverse of its reference edges
-    // E0 = (a0 - c0, b0 - c0), once: a measurement needs F = E E0^-1 only
+    // Per map the inverse of its reference edges E0 = (ea, eb), once: a
+    // measurement needs F = E E0^-1 only. A triangle: one map, its own
+    // (ea, eb = b - a, c - a; each triangle of the decomposition (centre,
+    // edge) is an affine image of it: the same F); a polygon of n >= 4
+    // points: n maps, the triangles (centre c, a, b), ea = a - c, eb = b - c
     const auto at = [&](const int k, const int d)
     {
         return points0[3*std::size_t(pointIds_[std::size_t(k)]) + (d ? axis1_ : axis0_)];
     };
-    inverse0_.resize(4*polygonPoints_.size());
-    degenerate_.assign(polygonPoints_.size(), 0);
+    const auto addMap = [&](const double* ea, const double* eb)
+    {
+        const double det0 = ea[0]*eb[1] - ea[1]*eb[0];
+        const double scale2 = std::max(ea[0]*ea[0] + ea[1]*ea[1], eb[0]*eb[0] + eb[1]*eb[1]);
+        if (det0*det0 > 1e-28*scale2*scale2)
+        {
+            inverse0_.insert(inverse0_.end(), {eb[1]/det0, -eb[0]/det0, -ea[1]/det0, ea[0]/det0});
+            degenerate_.push_back(0);
+        }
+        else
+        {
+            inverse0_.insert(inverse0_.end(), {0, 0, 0, 0});
+            degenerate_.push_back(1);   // quality 1 (TetQuality's convention)
+        }
+    };
+    mapStart_.assign(1, 0);
     for (std::size_t i = 0; i < size(); ++i)
     {
         const std::size_t j0 = polygonStart_[i], j1 = polygonStart_[i + 1];
+        if (j1 - j0 == 3)
+        {
+            const int a = polygonPoints_[j0], b = polygonPoints_[j0 + 1], c = polygonPoints_[j0 + 2];
+            const double ea[2] = {at(b, 0) - at(a, 0), at(b, 1) - at(a, 1)};
+            const double eb[2] = {at(c, 0) - at(a, 0), at(c, 1) - at(a, 1)};
+            addMap(ea, eb);
+            mapStart_.push_back(degenerate_.size());
+            continue;
+        }
         double c0[2] = {0, 0};
         for (std::size_t j = j0; j < j1; ++j)
         {
@@ -80,29 +107,33 @@ PlanarCellQualityScan::PlanarCellQualityScan
             const int a = polygonPoints_[j], b = polygonPoints_[j + 1 < j1 ? j + 1 : j0];
             const double ea[2] = {at(a, 0) - c0[0], at(a, 1) - c0[1]};
             const double eb[2] = {at(b, 0) - c0[0], at(b, 1) - c0[1]};
-            const double det0 = ea[0]*eb[1] - ea[1]*eb[0];
-            const double scale2 = std::max(ea[0]*ea[0] + ea[1]*ea[1], eb[0]*eb[0] + eb[1]*eb[1]);
-            double* inv = &inverse0_[4*j];
-            if (det0*det0 > 1e-28*scale2*scale2)
-            {
-                inv[0] = eb[1]/det0;
-                inv[1] = -eb[0]/det0;
-                inv[2] = -ea[1]/det0;
-                inv[3] = ea[0]/det0;
-            }
-            else
-            {
-                degenerate_[j] = 1;   // quality 1 (TetQuality's convention)
-                inv[0] = inv[1] = inv[2] = inv[3] = 0;
-            }
+            addMap(ea, eb);
         }
+        mapStart_.push_back(degenerate_.size());
     }
 }
 
 
-TetMeasures::Worst PlanarCellQualityScan::cellWorst(const std::size_t i, const double* x) const
+void PlanarCellQualityScan::addMaps
+(
+    const std::size_t i,
+    const double* x,
+    PlanarMapBatch& batch,
+    std::size_t t
+) const
 {
     const std::size_t j0 = polygonStart_[i], j1 = polygonStart_[i + 1];
+    std::size_t m = mapStart_[i];
+    if (j1 - j0 == 3)
+    {
+        const int a = polygonPoints_[j0], b = polygonPoints_[j0 + 1], c = polygonPoints_[j0 + 2];
+        batch.set
+        (
+            t, x[2*b] - x[2*a], x[2*b + 1] - x[2*a + 1], x[2*c] - x[2*a], x[2*c + 1] - x[2*a + 1],
+            &inverse0_[4*m], degenerate_[m]
+        );
+        return;
+    }
     const double n = double(j1 - j0);
     double c[2] = {0, 0};
     for (std::size_t j = j0; j < j1; ++j)
@@ -112,26 +143,15 @@ TetMeasures::Worst PlanarCellQualityScan::cellWorst(const std::size_t i, const d
     }
     c[0] /= n;
     c[1] /= n;
-
-    // Triangle (centre, a, b): F = (fa fb) E0^-1, the tetrahedra's
-    // A = diag(F, 1)
-    TetMeasures::Worst worst(metric_);
-    for (std::size_t j = j0; j < j1; ++j)
+    for (std::size_t j = j0; j < j1; ++j, ++m, ++t)
     {
-        if (degenerate_[j])
-        {
-            worst.add(-1, -1);
-            continue;
-        }
         const int a = polygonPoints_[j], b = polygonPoints_[j + 1 < j1 ? j + 1 : j0];
-        const double fa[2] = {x[2*a] - c[0], x[2*a + 1] - c[1]};
-        const double fb[2] = {x[2*b] - c[0], x[2*b + 1] - c[1]};
-        const double* inv = &inverse0_[4*j];
-        const double f00 = fa[0]*inv[0] + fb[0]*inv[2], f01 = fa[0]*inv[1] + fb[0]*inv[3];
-        const double f10 = fa[1]*inv[0] + fb[1]*inv[2], f11 = fa[1]*inv[1] + fb[1]*inv[3];
-        worst.add(f00*f11 - f01*f10, f00*f00 + f01*f01 + f10*f10 + f11*f11 + 1);
+        batch.set
+        (
+            t, x[2*a] - c[0], x[2*a + 1] - c[1], x[2*b] - c[0], x[2*b + 1] - c[1],
+            &inverse0_[4*m], degenerate_[m]
+        );
     }
-    return worst;
 }
 
 
@@ -148,15 +168,31 @@ void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide)
             x[2*i] = p[3*std::size_t(pointIds_[i]) + axis0_];
             x[2*i + 1] = p[3*std::size_t(pointIds_[i]) + axis1_];
         }
-        // the ranked worst's cube roots in SIMD lanes, per block of cells
+        // Per block of cells: the maps into a PlanarMapBatch (SIMD), each
+        // cell's worst, the ranked worst's qualities in SIMD lanes
+        PlanarMapBatch maps;
         WorstBatch finals(metric_, wide);
         constexpr long blockCells = 64;
         #pragma omp for schedule(static, 4)
         for (long b = 0; b < (n + blockCells - 1)/blockCells; ++b)
         {
-            for (long i = b*blockCells; i < std::min(n, (b + 1)*blockCells); ++i)
+            const std::size_t i0 = std::size_t(b*blockCells);
+            const std::size_t i1 = std::size_t(std::min(n, (b + 1)*blockCells));
+            const std::size_t m0 = mapStart_[i0];
+            maps.resize(mapStart_[i1] - m0);
+            for (std::size_t i = i0; i < i1; ++i)
             {
-                finals.add(cellWorst(std::size_t(i), x.data()), q + i);
+                addMaps(i, x.data(), maps, mapStart_[i] - m0);
+            }
+            maps.measure(metric_, wide);
+            for (std::size_t i = i0; i < i1; ++i)
+            {
+                TetMeasures::Worst worst(metric_);
+                for (std::size_t t = mapStart_[i] - m0; t < mapStart_[i + 1] - m0; ++t)
+                {
+                    worst.add(maps.J(t), maps.a2(t), maps.key(t));
+                }
+                finals.add(worst, q + i);
             }
             finals.finish();
         }

@@ -10,7 +10,10 @@
 // polygon. So the cell's quality is the minimum over the polygon's n
 // triangles of the tetrahedron quality with J = det F and |A|^2 = |F|^2 + 1:
 // the value of CellQualityScan on the prism (equal to round-off), from n
-// 2 x 2 maps instead of 6n tetrahedra (a quadrilateral: 4 instead of 24).
+// 2 x 2 maps instead of 6n tetrahedra (a quadrilateral: 4 instead of 24);
+// a triangle cell: one map, its own (each triangle of the decomposition is
+// an affine image of it; the same F to round-off), measured in SIMD lanes
+// (PlanarMapBatch), the cells' final qualities too (WorstBatch).
 // A degenerate reference triangle (quality 1 by TetQuality's convention) is
 // judged in the plane: for references within ~1e-14 of degenerate, or thinner
 // in the plane than ~1e-7 of the extrusion, the conventions can differ.
@@ -19,6 +22,7 @@
 // number of OpenMP threads gives bit-identical values.
 #pragma once
 
+#include "PlanarMapBatch.hpp"
 #include "TetMeasures.hpp"
 #include "TetQuality.hpp"
 
@@ -62,15 +66,17 @@ private:
     int axis0_, axis1_;
     TetQuality::Metric metric_;
 
-    //- Per polygon entry j (the triangle of the centre and the edge from
-    //  point j): the inverse of its reference edge matrix (2 x 2, row
-    //  major), and whether that is degenerate
+    //- Per map (a triangle cell: one, its own; a polygon of n >= 4
+    //  points: n, the triangles of the centre and the edge from point j),
+    //  cell i's maps from mapStart_[i]: the inverse of its reference edge
+    //  matrix (2 x 2, row major), and whether that is degenerate
+    std::vector<std::size_t> mapStart_;
     std::vector<double> inverse0_;
     std::vector<char> degenerate_;
 
-    //- The worst tetrahedron of cell i for the compact current in-plane
-    //  points x
-    TetMeasures::Worst cellWorst(std::size_t i, const double* x) const;
+    //- Cell i's maps for the compact current in-plane points x into batch
+    //  from position t
+    void addMaps(std::size_t i, const double* x, PlanarMapBatch& batch, std::size_t t) const;
 };
 
 } // namespace dcprbf

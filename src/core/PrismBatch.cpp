@@ -163,22 +163,12 @@ static DCPRBF_ALWAYS_INLINE void run
 } // namespace
 
 
-void PrismBatch::resize(const std::size_t n)
-{
-    n_ = n;
-    if (n > stride_)
-    {
-        // room rounded up to 8: aligned rows for any vector width
-        stride_ = (std::max(n, 2*stride_) + 7)/8*8;
-        data_.assign(36*stride_, 0.0);
-        out_.assign(41*stride_, 0.0);
-    }
-}
-
-
 void PrismBatch::measure(const TetQuality::Metric metric, const bool wide)
 {
-    tetKernel::dispatch<Kernel>(metric, wide, n_, stride_, data_.data(), out_.data());
+    tetKernel::dispatch<Kernel>
+    (
+        metric, wide, lanes_.size(), lanes_.stride(), lanes_.inData(), lanes_.outData()
+    );
 }
 
 } // namespace dcprbf

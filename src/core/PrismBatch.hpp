@@ -17,6 +17,7 @@
 // tetrahedra, kept, with TetMeasures::Worst).
 #pragma once
 
+#include "LaneArrays.hpp"
 #include "TetMeasures.hpp"
 #include "TetQuality.hpp"
 
@@ -30,10 +31,10 @@ class PrismBatch
 {
 public:
     //- Room for n prisms (their values undefined until set)
-    void resize(std::size_t n);
+    void resize(const std::size_t n) { lanes_.resize(n); }
 
     //- Number of prisms
-    std::size_t size() const { return n_; }
+    std::size_t size() const { return lanes_.size(); }
 
     //- Prism p: vertex k's reference coordinates at r0 + 3 v[k], current at
     //  x + 3 v[k]
@@ -45,15 +46,14 @@ public:
         const int v[6]
     )
     {
-        double* c = data_.data() + p;
         for (int k = 0; k < 6; ++k)
         {
             const double* r = r0 + 3*std::size_t(v[k]);
             const double* y = x + 3*std::size_t(v[k]);
             for (int d = 0; d < 3; ++d)
             {
-                c[(3*k + d)*stride_] = r[d];
-                c[(18 + 3*k + d)*stride_] = y[d];
+                lanes_.in(3*k + d, p) = r[d];
+                lanes_.in(18 + 3*k + d, p) = y[d];
             }
         }
     }
@@ -65,17 +65,17 @@ public:
 
     //- Prism p: all its tetrahedra were ranked or inverted or degenerate
     //  (no scalar path needed)
-    bool exact(const std::size_t p) const { return out_[4*stride_ + p] == 0; }
+    bool exact(const std::size_t p) const { return lanes_.out(4, p) == 0; }
 
     //- Prism p: J and |A|_F^2 of the ranked worst; ranked(p) false if
     //  every tetrahedron is inverted or degenerate
-    double J(const std::size_t p) const { return out_[p]; }
-    double a2(const std::size_t p) const { return out_[stride_ + p]; }
-    bool ranked(const std::size_t p) const { return out_[2*stride_ + p] < 1e308; }
+    double J(const std::size_t p) const { return lanes_.out(0, p); }
+    double a2(const std::size_t p) const { return lanes_.out(1, p); }
+    bool ranked(const std::size_t p) const { return lanes_.out(2, p) < 1e308; }
 
     //- Prism p: the least quality of its inverted and degenerate
     //  tetrahedra (1e308 if none)
-    double other(const std::size_t p) const { return out_[3*stride_ + p]; }
+    double other(const std::size_t p) const { return lanes_.out(3, p); }
 
     //- Prism p (exact) as TetMeasures::Worst keeps it
     TetMeasures::Worst worst(const std::size_t p, const TetQuality::Metric metric) const
@@ -87,24 +87,18 @@ public:
     //  scalar path)
     double tetJ(const std::size_t p, const int t) const
     {
-        return out_[(5 + 2*std::size_t(t))*stride_ + p];
+        return lanes_.out(5 + 2*t, p);
     }
     double tetA2(const std::size_t p, const int t) const
     {
-        return out_[(6 + 2*std::size_t(t))*stride_ + p];
+        return lanes_.out(6 + 2*t, p);
     }
 
 private:
-    //- Number of prisms, room per component
-    std::size_t n_ = 0, stride_ = 0;
-
-    //- 36 components (6 reference then 6 current vertices, x y z each),
-    //  stride_ apart
-    std::vector<double> data_;
-
-    //- J, a2, key, other, the number beyond the key's range, then J and
-    //  a2 of each of the 18 tetrahedra, stride_ apart
-    std::vector<double> out_;
+    //- In: 36 components (6 reference then 6 current vertices, x y z
+    //  each); out: J, a2, key, other, the number beyond the key's range,
+    //  then J and a2 of each of the 18 tetrahedra
+    LaneArrays lanes_{36, 41};
 };
 
 } // namespace dcprbf

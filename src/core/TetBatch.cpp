@@ -76,22 +76,12 @@ void TetBatch::qualities
 }
 
 
-void TetBatch::resize(const std::size_t n)
-{
-    n_ = n;
-    if (n > stride_)
-    {
-        // room rounded up to 8: aligned rows for any vector width
-        stride_ = (std::max(n, 2*stride_) + 7)/8*8;
-        data_.assign(18*stride_, 0.0);
-        out_.assign(3*stride_, 0.0);
-    }
-}
-
-
 void TetBatch::measure(const TetQuality::Metric metric, const bool wide)
 {
-    tetKernel::dispatch<Kernel>(metric, wide, n_, stride_, data_.data(), out_.data());
+    tetKernel::dispatch<Kernel>
+    (
+        metric, wide, lanes_.size(), lanes_.stride(), lanes_.inData(), lanes_.outData()
+    );
 }
 
 void WorstBatch::finish()

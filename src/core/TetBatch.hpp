@@ -17,6 +17,7 @@
 // whatever the batch or thread count).
 #pragma once
 
+#include "LaneArrays.hpp"
 #include "TetMeasures.hpp"
 #include "TetQuality.hpp"
 
@@ -30,10 +31,10 @@ class TetBatch
 {
 public:
     //- Room for n tetrahedra (their values undefined until set)
-    void resize(std::size_t n);
+    void resize(const std::size_t n) { lanes_.resize(n); }
 
     //- Number of tetrahedra
-    std::size_t size() const { return n_; }
+    std::size_t size() const { return lanes_.size(); }
 
     //- Tetrahedron t: reference and current edge columns (x y z each)
     inline void set
@@ -43,13 +44,12 @@ public:
         const double* f0, const double* fa, const double* fb
     )
     {
-        double* c = data_.data() + t;
         const double* cols[6] = {e0, ea, eb, f0, fa, fb};
         for (int k = 0; k < 6; ++k)
         {
             for (int d = 0; d < 3; ++d)
             {
-                c[(3*k + d)*stride_] = cols[k][d];
+                lanes_.in(3*k + d, t) = cols[k][d];
             }
         }
     }
@@ -72,19 +72,13 @@ public:
         bool wide = true
     );
 
-    double J(const std::size_t t) const { return out_[t]; }
-    double a2(const std::size_t t) const { return out_[stride_ + t]; }
-    double key(const std::size_t t) const { return out_[2*stride_ + t]; }
+    double J(const std::size_t t) const { return lanes_.out(0, t); }
+    double a2(const std::size_t t) const { return lanes_.out(1, t); }
+    double key(const std::size_t t) const { return lanes_.out(2, t); }
 
 private:
-    //- Number of tetrahedra, room per component
-    std::size_t n_ = 0, stride_ = 0;
-
-    //- 18 components (e0 ea eb f0 fa fb, x y z each), stride_ apart
-    std::vector<double> data_;
-
-    //- J, a2, key, stride_ apart
-    std::vector<double> out_;
+    //- In: 18 components (e0 ea eb f0 fa fb, x y z each); out: J, a2, key
+    LaneArrays lanes_{18, 3};
 };
 
 //- Cells' worst tetrahedra (TetMeasures::Worst) to their qualities: the

@@ -344,6 +344,25 @@ TEST(CellQualityScan, KeyRanksAsTheQuality)
 }
 
 
+// The scan of b at p (extreme cells) equals the reference to 1e-10
+static void expectExtremeAsTheReference
+(
+    const HexBlock& b,
+    const std::vector<double>& p,
+    const double factor
+)
+{
+    const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
+    std::vector<double> q(scan.size());
+    scan.measure(p.data(), q.data());
+    for (std::size_t c = 0; c < q.size(); ++c)
+    {
+        const double ref = b.reference(c, p, TetQuality::Metric::sizeShape);
+        EXPECT_NEAR(q[c], ref, 1e-10*std::abs(ref) + 1e-300) << c << ' ' << factor;
+    }
+}
+
+
 TEST(CellQualityScan, ExtremeTetrahedraCompareByTheirQuality)
 {
     // a cell flattened to J ~ 1e-45 (q^6 underflows) and one stretched
@@ -357,14 +376,7 @@ TEST(CellQualityScan, ExtremeTetrahedraCompareByTheirQuality)
             if (p[3*i] < 1.5 && p[3*i + 1] < 1.5 && p[3*i + 2] < 1.0) continue;
             p[3*i + 2] = 0.8 + (p[3*i + 2] - 0.8)*factor;
         }
-        const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
-        std::vector<double> q(scan.size());
-        scan.measure(p.data(), q.data());
-        for (std::size_t c = 0; c < q.size(); ++c)
-        {
-            const double ref = b.reference(c, p, TetQuality::Metric::sizeShape);
-            EXPECT_NEAR(q[c], ref, 1e-10*std::abs(ref) + 1e-300) << c << ' ' << factor;
-        }
+        expectExtremeAsTheReference(b, p, factor);
     }
 }
 
@@ -442,14 +454,7 @@ TEST(CellQualityScan, ExtremePrismsAndTetrahedraCompareByTheirQuality)
                 p[3*i + 2] *= factor;
                 p[3*i] += 0.2*p[3*i + 1]*p[3*i + 1];
             }
-            const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
-            std::vector<double> q(scan.size());
-            scan.measure(p.data(), q.data());
-            for (std::size_t c = 0; c < q.size(); ++c)
-            {
-                const double ref = b.reference(c, p, TetQuality::Metric::sizeShape);
-                EXPECT_NEAR(q[c], ref, 1e-10*std::abs(ref) + 1e-300) << c << ' ' << factor;
-            }
+            expectExtremeAsTheReference(b, p, factor);
         }
     }
 }

@@ -169,6 +169,11 @@ TEST(PlanarCellQualityScan, RigidMotionIsOneAndThreadsAreBitIdentical)
     scan.measure(d.data(), q2.data());
     omp_set_num_threads(nThreads);
     EXPECT_EQ(q1, q2);
+
+    // the AVX2 and the default build of the SIMD kernels: the same bits
+    std::vector<double> narrow(scan.size());
+    scan.measure(d.data(), narrow.data(), false);
+    EXPECT_EQ(q1, narrow);
 }
 
 
@@ -186,12 +191,14 @@ TEST(PlanarCellQualityScan, DegenerateReferenceIsOne)
 {
     // a flat reference polygon (its points on a line): quality 1 whatever
     // the motion (TetQuality's convention); a proper triangle beside it
+    // (a quadrilateral and a triangle: n maps and the triangle's own)
     const double p0[15] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 0, 1, 0};
     const double p[15] = {0, 0, 0, 1, 0.5, 0, 2, -0.3, 0, 3, 0.2, 0, 0.5, 1, 0};
-    const PlanarCellQualityScan scan({0, 4, 7}, {0, 1, 2, 3, 0, 1, 4}, p0, 0, 1);
-    std::vector<double> q(2);
+    const PlanarCellQualityScan scan({0, 4, 7, 10}, {0, 1, 2, 3, 0, 1, 4, 0, 1, 2}, p0, 0, 1);
+    std::vector<double> q(3);
     scan.measure(p, q.data());
     EXPECT_EQ(q[0], 1.0);
     EXPECT_LT(q[1], 1.0);
     EXPECT_GT(q[1], 0.0);
+    EXPECT_EQ(q[2], 1.0);
 }
