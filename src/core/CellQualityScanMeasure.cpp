@@ -128,20 +128,21 @@ void CellQualityScan::measure(const double* p, double* q, const bool wide) const
             for (std::size_t c = 0; c < m; ++c)
             {
                 const std::size_t i = i0 + c;
-                const int* v = vertices_.data() + slot_[i];
                 if (kind_[i] == prism)
                 {
-                    prisms.set(first[c], x0, x.data(), v);
+                    prisms.set(first[c], x0, x.data(), &vertices_[std::size_t(slot_[i])]);
                 }
                 else if (kind_[i] == tetrahedron)
                 {
+                    const int* v = &vertices_[std::size_t(slot_[i])];
                     double e[3][3], f[3][3];
                     for (int k = 0; k < 3; ++k)
                     {
+                        const std::size_t a = 3*std::size_t(v[k + 1]), o = 3*std::size_t(v[0]);
                         for (int d = 0; d < 3; ++d)
                         {
-                            e[k][d] = x0[3*v[k + 1] + d] - x0[3*v[0] + d];
-                            f[k][d] = x[3*v[k + 1] + d] - x[3*v[0] + d];
+                            e[k][d] = x0[a + d] - x0[o + d];
+                            f[k][d] = x[a + d] - x[o + d];
                         }
                     }
                     tets.set(first[c], e[0], e[1], e[2], f[0], f[1], f[2]);

@@ -20,16 +20,31 @@ bool tetrahedronVertices
     const int* a = points + start[0];
     const int* b = points + start[1];
     v[0] = a[0]; v[1] = a[1]; v[2] = a[2];
-    if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) return false;
+    v[3] = -1;
     for (int j = 0; j < 3; ++j)
     {
-        if (b[j] != a[0] && b[j] != a[1] && b[j] != a[2])
-        {
-            v[3] = b[j];
-            return true;
-        }
+        if (b[j] != a[0] && b[j] != a[1] && b[j] != a[2]) v[3] = b[j];
     }
-    return false;
+    if (v[3] < 0 || v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) return false;
+
+    // each face three of the four vertices, each leaving out another one
+    bool left[4] = {false, false, false, false};
+    for (std::size_t k = 0; k < 4; ++k)
+    {
+        const int* f = points + start[k];
+        int out = -1;
+        for (int i = 0; i < 4; ++i)
+        {
+            if (f[0] != v[i] && f[1] != v[i] && f[2] != v[i])
+            {
+                if (out >= 0) return false;
+                out = i;
+            }
+        }
+        if (out < 0 || left[out] || f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) return false;
+        left[out] = true;
+    }
+    return true;
 }
 
 

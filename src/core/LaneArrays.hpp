@@ -17,7 +17,7 @@ public:
     LaneArrays(const int nIn, const int nOut) : nIn_(nIn), nOut_(nOut) {}
 
     //- Room for n items (their values undefined until set); the room only
-    //  grows (rounded up to 8: aligned rows for any vector width)
+    //  grows (rounded up to a multiple of 8 items)
     void resize(const std::size_t n)
     {
         n_ = n;

@@ -53,7 +53,7 @@ public:
     std::size_t size() const { return polygonStart_.size() - 1; }
 
     //- Quality of every cell for the points p (x y z per point, indexed
-    //  as the reference points) into q (wide false: the SIMD cube roots'
+    //  as the reference points) into q (wide false: the SIMD kernels'
     //  default-target build even where AVX2 is there; the same values)
     void measure(const double* p, double* q, bool wide = true) const;
 

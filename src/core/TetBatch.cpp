@@ -62,6 +62,12 @@ static DCPRBF_ALWAYS_INLINE void run
 } // namespace
 
 
+bool TetBatch::wideAvailable()
+{
+    return tetKernel::hasAvx2();
+}
+
+
 void TetBatch::qualities
 (
     const std::size_t n,

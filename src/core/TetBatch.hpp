@@ -54,6 +54,10 @@ public:
         }
     }
 
+    //- Is there an AVX2 build of the SIMD kernels on this processor (else
+    //  wide and narrow are the same build)?
+    static bool wideAvailable();
+
     //- J, |A|_F^2 and the rank key of every tetrahedron
     //  (wide false: the default-target build even where AVX2 is there;
     //  the values are the same)

@@ -4,13 +4,14 @@
 // overflow in any lane, only selects of computed values.
 //
 // Include only in the kernels' .cpp files: on x86-64 with GCC it switches
-// off -fmath-errno (sqrt vectorizes; errno is never read) and
-// -ftrapping-math for the rest of the file (GCC vectorizes a select of
-// floating-point values only when told that the operations do not trap;
-// none here does: every operation is computed in every lane with safe
-// operands and only results are selected). No other effect: no
-// reassociation, no contraction, IEEE results, the same in a vector body,
-// its remainder and either build.
+// off, for the rest of the file, -fmath-errno (sqrt vectorizes; errno is
+// never read), contraction (-ffp-contract=off: no FMA on any target, so
+// every build gives the same bits) and -ftrapping-math (GCC vectorizes a
+// select of floating-point values only when told that the operations do
+// not trap; none here does: every operation is computed in every lane with
+// safe operands and only results are selected). No other effect: no
+// reassociation, IEEE results, the same in a vector body, its remainder and
+// either build.
 //
 // dispatch<Kernel> runs Kernel::run<M> (M: the metric as a template
 // argument) compiled for AVX2 where the processor has it (GCC on x86-64;
@@ -26,7 +27,7 @@
 #include <cstring>
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-    #pragma GCC optimize("no-trapping-math", "no-math-errno")
+    #pragma GCC optimize("no-trapping-math", "no-math-errno", "fp-contract=off")
     #define DCPRBF_AVX2 1
 #else
     #define DCPRBF_AVX2 0
@@ -101,16 +102,22 @@ DCPRBF_ALWAYS_INLINE void measures
 
 
 //- TetMeasures::rankKey for metric M where J is in (1e-30, 1e30) and
-//  a2 in (0, 1e25) (a2 >= 3 J^(2/3) there), 0 elsewhere (rank by the
-//  quality). The excluded lanes compute with 1s: nothing traps.
+//  a2 in (1e-40, 1e25), 0 elsewhere (rank by the quality; TetMeasures::
+//  keyRange). The excluded lanes compute with J = a2 = 1: nothing traps.
 template<int M>
 DCPRBF_ALWAYS_INLINE double key(const double J, const double a2)
 {
-    // one comparison per select (vectorizes on any SIMD width)
+    // both replaced by 1 unless both are in range (a2 >= 3 J^(2/3) > 3e-20
+    // there: the bound 1e-40 excludes round-off alone); one comparison per
+    // select (vectorizes on any SIMD width)
     double j = J > 1e-30 ? J : 1.0;
-    j = j < 1e30 ? j : 1.0;
-    double a = a2 > 0 ? a2 : 1.0;
-    a = a < 1e25 ? a : 1.0;
+    j = J < 1e30 ? j : 1.0;
+    j = a2 > 1e-40 ? j : 1.0;
+    j = a2 < 1e25 ? j : 1.0;
+    double a = a2 > 1e-40 ? a2 : 1.0;
+    a = a2 < 1e25 ? a : 1.0;
+    a = J > 1e-30 ? a : 1.0;
+    a = J < 1e30 ? a : 1.0;
     double k;
     if (M == size)
     {
@@ -130,7 +137,7 @@ DCPRBF_ALWAYS_INLINE double key(const double J, const double a2)
     }
     k = J > 1e-30 ? k : 0.0;
     k = J < 1e30 ? k : 0.0;
-    k = a2 > 0 ? k : 0.0;
+    k = a2 > 1e-40 ? k : 0.0;
     return a2 < 1e25 ? k : 0.0;
 }
 

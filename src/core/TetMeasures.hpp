@@ -89,7 +89,7 @@ struct TetMeasures
         {
             return J;
         }
-        const double fSize = std::min(J, 1.0/J);
+        const double fSize = J < 1 ? J : 1.0/J;   // no 1/J overflow
         const double fShape = 3.0*std::cbrt(J*J)/a2;
         switch (metric)
         {
@@ -97,6 +97,14 @@ struct TetMeasures
             case TetQuality::Metric::shape: return fShape;
             default: return std::sqrt(fSize)*fShape;
         }
+    }
+
+    //- Where rankKey neither underflows to 0/0 nor overflows (a2 >=
+    //  3 J^(2/3) > 3e-20 for J > 1e-30: the bound 1e-40 excludes round-off
+    //  alone); elsewhere tetrahedra compare by their quality
+    static inline bool keyRange(const double J, const double a2)
+    {
+        return J > 1e-30 && J < 1e30 && a2 > 1e-40 && a2 < 1e25;
     }
 
     static inline double rankKey(const double J, const double a2, const TetQuality::Metric metric)
@@ -148,7 +156,7 @@ struct TetMeasures
 
         inline void add(const double J, const double a2)
         {
-            add(J, a2, (J > 0 && a2 > 0) ? rankKey(J, a2, metric_) : 0);
+            add(J, a2, keyRange(J, a2) ? rankKey(J, a2, metric_) : 0);
         }
 
         //- Add with its key computed already (rankKey, or 0: rank by the

@@ -2,11 +2,14 @@
 // Unit tests of the flat cell-quality scan: the same values as the reference
 // TetQuality::compute on the same decomposition, whatever the thread count.
 #include "CellQualityScan.hpp"
+#include "TetBatch.hpp"
 #include "TetMeasures.hpp"
 
 #include <gtest/gtest.h>
 
 #include <omp.h>
+
+#include <fenv.h>
 
 #include <algorithm>
 #include <random>
@@ -293,7 +296,8 @@ TEST(CellQualityScan, RigidMotionIsOne)
 
 TEST(CellQualityScan, BitIdenticalOnOneAndTwoThreads)
 {
-    const HexBlock b(12);
+    // hexahedra, tetrahedra and prisms (every path)
+    const HexBlock b(12, HexBlock::Split::mixed);
     const std::vector<double> p(deformed(b.points, 0.3, 11));
     const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
     std::vector<double> q1(scan.size()), q2(scan.size());
@@ -423,6 +427,10 @@ TEST(CellQualityScan, SimdBuildsBitIdentical)
 {
     // the AVX2 build (where the processor has it) and the default one: no
     // contraction, the same values to the last bit
+    if (!TetBatch::wideAvailable())
+    {
+        GTEST_SKIP() << "no AVX2 build on this processor: one build only";
+    }
     const HexBlock b(8, HexBlock::Split::mixed);
     const std::vector<double> p(deformed(b.points, 0.3, 21));
     for (const auto m : {TetQuality::Metric::sizeShape, TetQuality::Metric::size,
@@ -472,5 +480,55 @@ TEST(CellQualityScan, DegenerateReferencePrismsAreOne)
     {
         EXPECT_EQ(b.reference(c, p, TetQuality::Metric::sizeShape), 1.0);
         EXPECT_EQ(q[c], 1.0) << c;
+    }
+}
+
+
+TEST(CellQualityScan, NoFloatingPointTrapOnExtremeOrDegenerateCells)
+{
+    // OpenFOAM traps division by zero, invalid operations and overflow: no
+    // lane of the SIMD kernels, no scalar path may raise one, for cells
+    // collapsed to 1e-25 of their size in every direction (J = 1e-75,
+    // |A|^2 = 3e-50), flattened to 1e-45 or stretched 1e30 times, inverted
+    // or on a flat reference (a trap kills the test)
+    for (const auto split : {HexBlock::Split::none, HexBlock::Split::prisms,
+                             HexBlock::Split::tets, HexBlock::Split::mixed})
+    {
+        HexBlock b(3, split);
+        std::vector<std::vector<double>> moved;
+        for (const double f : {1e-25, 1e-45, 1e30})
+        {
+            std::vector<double> p(b.points);
+            for (std::size_t i = 0; i < p.size(); ++i)
+            {
+                if (f == 1e-25 || i % 3 == 2) p[i] *= f;
+            }
+            moved.push_back(p);
+        }
+        moved.push_back(deformed(b.points, 0.6, 23));
+        HexBlock flat(b);
+        for (std::size_t i = 2; i < flat.points.size(); i += 3) flat.points[i] = 0;
+        for (const auto m : {TetQuality::Metric::sizeShape, TetQuality::Metric::size,
+                             TetQuality::Metric::shape})
+        {
+            const CellQualityScan scan(b.scan(m)), flatScan(flat.scan(m));
+            std::vector<double> q(scan.size());
+            // on this thread only (the trap mask is per thread)
+            const int nThreads = omp_get_max_threads();
+            omp_set_num_threads(1);
+            feclearexcept(FE_ALL_EXCEPT);
+            feenableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+            for (const auto& p : moved)
+            {
+                for (const bool wide : {true, false})
+                {
+                    scan.measure(p.data(), q.data(), wide);
+                    flatScan.measure(p.data(), q.data(), wide);
+                }
+            }
+            fedisableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+            omp_set_num_threads(nThreads);
+            for (const double x : q) EXPECT_EQ(x, 1.0);   // the flat reference's
+        }
     }
 }

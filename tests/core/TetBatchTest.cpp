@@ -30,7 +30,11 @@ TEST(TetBatch, QualitiesEqualTetMeasuresOverTheRankedRange)
         std::vector<double> wide(J.size()), narrow(J.size());
         TetBatch::qualities(J.size(), J.data(), a2.data(), wide.data(), m, true);
         TetBatch::qualities(J.size(), J.data(), a2.data(), narrow.data(), m, false);
-        EXPECT_EQ(wide, narrow);
+        if (TetBatch::wideAvailable())
+        {
+            // the AVX2 and the default build: the same bits
+            EXPECT_EQ(wide, narrow);
+        }
         for (std::size_t i = 0; i < J.size(); ++i)
         {
             const double ref = TetMeasures::quality(J[i], a2[i], m);
