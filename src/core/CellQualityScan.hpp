@@ -105,6 +105,35 @@ private:
     //  cells' entries only; cellFaces: entry numbers (the identity)
     void classify(std::vector<std::size_t>& cellStart);
 
+    //- Cells measured at once
+    static constexpr std::size_t blockCells = 32;
+
+    //- A thread's scratch space for measureBlock
+    struct Scratch
+    {
+        TetBatch tets;
+        PrismBatch prisms;
+        WorstBatch finals;
+        std::vector<double> buf;
+        std::size_t first[blockCells];
+
+        Scratch(const TetQuality::Metric metric, const bool wide)
+        :
+            finals(metric, wide)
+        {}
+    };
+
+    //- The qualities of the m cells from i0 (at most blockCells) for the
+    //  compact current points x into q (the caller's order)
+    void measureBlock
+    (
+        std::size_t i0,
+        std::size_t m,
+        const double* x,
+        Scratch& s,
+        double* q
+    ) const;
+
     //- Number of tetrahedra of general cell g
     std::size_t tetCount(std::size_t g) const;
 

@@ -76,18 +76,103 @@ void CellQualityScan::addTets
 }
 
 
+void CellQualityScan::measureBlock
+(
+    const std::size_t i0,
+    const std::size_t m,
+    const double* x,
+    Scratch& s,
+    double* q
+) const
+{
+    const double* x0 = points0_.data();
+
+    // The prisms into a PrismBatch, the tetrahedra of the others into a
+    // TetBatch (a tetrahedral cell: one, with its own A: every tetrahedron
+    // of its decomposition is an affine image of it)
+    std::size_t nTets = 0, nPrisms = 0;
+    for (std::size_t c = 0; c < m; ++c)
+    {
+        const std::size_t i = i0 + c;
+        if (kind_[i] == prism)
+        {
+            s.first[c] = nPrisms++;
+        }
+        else
+        {
+            s.first[c] = nTets;
+            nTets += kind_[i] == tetrahedron ? 1 : tetCount(std::size_t(slot_[i]));
+        }
+    }
+    s.tets.resize(nTets);
+    s.prisms.resize(nPrisms);
+    for (std::size_t c = 0; c < m; ++c)
+    {
+        const std::size_t i = i0 + c;
+        if (kind_[i] == prism)
+        {
+            s.prisms.set(s.first[c], x0, x, &vertices_[std::size_t(slot_[i])]);
+        }
+        else if (kind_[i] == tetrahedron)
+        {
+            const int* v = &vertices_[std::size_t(slot_[i])];
+            double e[3][3], f[3][3];
+            for (int k = 0; k < 3; ++k)
+            {
+                const std::size_t a = 3*std::size_t(v[k + 1]), o = 3*std::size_t(v[0]);
+                for (int d = 0; d < 3; ++d)
+                {
+                    e[k][d] = x0[a + d] - x0[o + d];
+                    f[k][d] = x[a + d] - x[o + d];
+                }
+            }
+            s.tets.set(s.first[c], e[0], e[1], e[2], f[0], f[1], f[2]);
+        }
+        else
+        {
+            addTets(std::size_t(slot_[i]), x, s.tets, s.first[c], s.buf);
+        }
+    }
+
+    // Measured in SIMD lanes; each cell's worst (TetMeasures::Worst), the
+    // qualities in SIMD lanes again (WorstBatch)
+    if (nTets) s.tets.measure(metric_, s.finals.wide());
+    if (nPrisms) s.prisms.measure(metric_, s.finals.wide());
+    for (std::size_t c = 0; c < m; ++c)
+    {
+        const std::size_t i = i0 + c;
+        TetMeasures::Worst worst(metric_);
+        if (kind_[i] != prism)
+        {
+            const std::size_t t1 =
+                s.first[c] + (kind_[i] == tetrahedron ? 1 : tetCount(std::size_t(slot_[i])));
+            for (std::size_t t = s.first[c]; t < t1; ++t)
+            {
+                worst.add(s.tets.J(t), s.tets.a2(t), s.tets.key(t));
+            }
+        }
+        else if (!s.prisms.exact(s.first[c]))
+        {
+            for (int t = 0; t < 18; ++t)
+            {
+                worst.add(s.prisms.tetJ(s.first[c], t), s.prisms.tetA2(s.first[c], t));
+            }
+        }
+        else
+        {
+            worst = s.prisms.worst(s.first[c], metric_);
+        }
+        s.finals.add(worst, &q[order_[i]]);
+    }
+    s.finals.finish();
+}
+
+
 void CellQualityScan::measure(const double* p, double* q, const bool wide) const
 {
     const long nPoints = long(pointIds_.size());
     std::vector<double> x(3*pointIds_.size());
     const std::size_t n = size();
-    const double* x0 = points0_.data();
-
-    // Cells in blocks: the prisms into a PrismBatch, the tetrahedra of the
-    // others into a TetBatch (a tetrahedral cell: one, with its own A: every
-    // tetrahedron of its decomposition is an affine image of it), each
-    // measured in SIMD lanes; then each cell's worst (TetMeasures::Worst)
-    constexpr std::size_t blockCells = 32;
     const long nBlocks = long((n + blockCells - 1)/blockCells);
     #pragma omp parallel
     {
@@ -99,90 +184,12 @@ void CellQualityScan::measure(const double* p, double* q, const bool wide) const
             x[3*i + 1] = y[1];
             x[3*i + 2] = y[2];
         }
-        TetBatch tets;
-        PrismBatch prisms;
-        WorstBatch finals(metric_, wide);
-        std::vector<double> buf;
-        std::size_t first[blockCells];
+        Scratch s(metric_, wide);
         #pragma omp for schedule(static, 8)
         for (long b = 0; b < nBlocks; ++b)
         {
             const std::size_t i0 = std::size_t(b)*blockCells;
-            const std::size_t m = std::min(blockCells, n - i0);
-            std::size_t nTets = 0, nPrisms = 0;
-            for (std::size_t c = 0; c < m; ++c)
-            {
-                const std::size_t i = i0 + c;
-                if (kind_[i] == prism)
-                {
-                    first[c] = nPrisms++;
-                }
-                else
-                {
-                    first[c] = nTets;
-                    nTets += kind_[i] == tetrahedron ? 1 : tetCount(std::size_t(slot_[i]));
-                }
-            }
-            tets.resize(nTets);
-            prisms.resize(nPrisms);
-            for (std::size_t c = 0; c < m; ++c)
-            {
-                const std::size_t i = i0 + c;
-                if (kind_[i] == prism)
-                {
-                    prisms.set(first[c], x0, x.data(), &vertices_[std::size_t(slot_[i])]);
-                }
-                else if (kind_[i] == tetrahedron)
-                {
-                    const int* v = &vertices_[std::size_t(slot_[i])];
-                    double e[3][3], f[3][3];
-                    for (int k = 0; k < 3; ++k)
-                    {
-                        const std::size_t a = 3*std::size_t(v[k + 1]), o = 3*std::size_t(v[0]);
-                        for (int d = 0; d < 3; ++d)
-                        {
-                            e[k][d] = x0[a + d] - x0[o + d];
-                            f[k][d] = x[a + d] - x[o + d];
-                        }
-                    }
-                    tets.set(first[c], e[0], e[1], e[2], f[0], f[1], f[2]);
-                }
-                else
-                {
-                    addTets(std::size_t(slot_[i]), x.data(), tets, first[c], buf);
-                }
-            }
-            if (nTets) tets.measure(metric_, wide);
-            if (nPrisms) prisms.measure(metric_, wide);
-
-            for (std::size_t c = 0; c < m; ++c)
-            {
-                const std::size_t i = i0 + c;
-                TetMeasures::Worst worst(metric_);
-                if (kind_[i] != prism)
-                {
-                    const std::size_t t1 =
-                        first[c]
-                      + (kind_[i] == tetrahedron ? 1 : tetCount(std::size_t(slot_[i])));
-                    for (std::size_t t = first[c]; t < t1; ++t)
-                    {
-                        worst.add(tets.J(t), tets.a2(t), tets.key(t));
-                    }
-                }
-                else if (!prisms.exact(first[c]))
-                {
-                    for (int t = 0; t < 18; ++t)
-                    {
-                        worst.add(prisms.tetJ(first[c], t), prisms.tetA2(first[c], t));
-                    }
-                }
-                else
-                {
-                    worst = prisms.worst(first[c], metric_);
-                }
-                finals.add(worst, &q[order_[i]]);
-            }
-            finals.finish();
+            measureBlock(i0, std::min(blockCells, n - i0), x.data(), s, q);
         }
     }
 }

@@ -116,6 +116,9 @@ public:
     //- Write the qualities added since the last finish()
     void finish();
 
+    //- The AVX2 build where there is one?
+    bool wide() const { return wide_; }
+
 private:
     TetQuality::Metric metric_;
     bool wide_;

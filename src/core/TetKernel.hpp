@@ -1,15 +1,17 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // dcpRBF numerical core: the tetrahedron measures of TetMeasures written for
-// SIMD loops (TetBatch, PrismBatch): no branch, no division by zero and no
-// overflow in any lane, only selects of computed values.
+// SIMD loops (TetBatch, PrismBatch, PlanarMapBatch): no branch, only selects
+// of computed values; the selected lanes' operands are always in range (no
+// division by zero, no overflow), and dispatch() masks floating-point
+// exceptions while a kernel runs, as the compiler may compute ahead of a
+// select in a lane whose result is then discarded.
 //
 // Include only in the kernels' .cpp files: on x86-64 with GCC it switches
 // off, for the rest of the file, -fmath-errno (sqrt vectorizes; errno is
 // never read), contraction (-ffp-contract=off: no FMA on any target, so
 // every build gives the same bits) and -ftrapping-math (GCC vectorizes a
 // select of floating-point values only when told that the operations do
-// not trap; none here does: every operation is computed in every lane with
-// safe operands and only results are selected). No other effect: no
+// not trap: dispatch() masks the exceptions meanwhile). No other effect: no
 // reassociation, IEEE results, the same in a vector body, its remainder and
 // either build.
 //
@@ -21,12 +23,14 @@
 
 #include "TetQuality.hpp"
 
+#include <cfenv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+    #include <xmmintrin.h>
     #pragma GCC optimize("no-trapping-math", "no-math-errno", "fp-contract=off")
     #define DCPRBF_AVX2 1
 #else
@@ -103,37 +107,30 @@ DCPRBF_ALWAYS_INLINE void measures
 
 //- TetMeasures::rankKey for metric M where J is in (1e-30, 1e30) and
 //  a2 in (1e-40, 1e25), 0 elsewhere (rank by the quality; TetMeasures::
-//  keyRange). The excluded lanes compute with J = a2 = 1: nothing traps.
+//  keyRange).
 template<int M>
 DCPRBF_ALWAYS_INLINE double key(const double J, const double a2)
 {
-    // both replaced by 1 unless both are in range (a2 >= 3 J^(2/3) > 3e-20
-    // there: the bound 1e-40 excludes round-off alone); one comparison per
-    // select (vectorizes on any SIMD width)
-    double j = J > 1e-30 ? J : 1.0;
-    j = J < 1e30 ? j : 1.0;
-    j = a2 > 1e-40 ? j : 1.0;
-    j = a2 < 1e25 ? j : 1.0;
-    double a = a2 > 1e-40 ? a2 : 1.0;
-    a = a2 < 1e25 ? a : 1.0;
-    a = J > 1e-30 ? a : 1.0;
-    a = J < 1e30 ? a : 1.0;
+    // computed from J and a2 as they are; kept only in the range (a2 >=
+    // 3 J^(2/3) > 3e-20 for J > 1e-30: the bound 1e-40 excludes round-off
+    // alone), where nothing overflows or divides by zero (elsewhere a
+    // discarded lane may: dispatch() masks the exceptions)
     double k;
     if (M == size)
     {
-        const double r = 1.0/j;
-        k = j < r ? j : r;
+        const double r = 1.0/J;
+        k = J < r ? J : r;
     }
     else if (M == shape)
     {
-        k = 27.0*j*j/(a*a*a);
+        k = 27.0*J*J/(a2*a2*a2);
     }
     else
     {
-        const double a6 = a*a*a;
-        const double j4 = (j*j)*(j*j);
-        const double j7 = j4*(j*j*j);
-        k = 729.0*(j < 1 ? j7 : j)/(a6*a6);
+        const double a6 = a2*a2*a2;
+        const double J4 = (J*J)*(J*J);
+        const double J7 = J4*(J*J*J);
+        k = 729.0*(J < 1 ? J7 : J)/(a6*a6);
     }
     k = J > 1e-30 ? k : 0.0;
     k = J < 1e30 ? k : 0.0;
@@ -225,13 +222,32 @@ template<class Kernel, class... Args>
 void dispatch(const TetQuality::Metric metric, const bool wide, Args... args)
 {
     #if DCPRBF_AVX2
+    // With -fno-trapping-math GCC may move an operation ahead of a select
+    // (x*x of both arms, then the select): a lane whose result is
+    // discarded may then overflow. So every floating-point exception is
+    // masked while a kernel runs (OpenFOAM traps some) and the caller's
+    // masks and flags are restored after it (MXCSR: SSE/AVX only; the
+    // kernels use no x87)
+    const unsigned csr = _mm_getcsr();
+    _mm_setcsr(csr | 0x1F80u);
     if (wide && hasAvx2())
     {
         byMetricAvx2<Kernel>(metric, args...);
-        return;
     }
-    #endif
+    else
+    {
+        byMetricDefault<Kernel>(metric, args...);
+    }
+    _mm_setcsr(csr);
+    #else
+    // the same, portably (the operations are computed in every lane here
+    // too, as written)
+    (void)wide;
+    std::fenv_t env;
+    std::feholdexcept(&env);
     byMetricDefault<Kernel>(metric, args...);
+    std::fesetenv(&env);
+    #endif
 }
 
 } // namespace tetKernel
