@@ -127,36 +127,32 @@ DCPRBF_ALWAYS_INLINE void addPrism
 }
 
 
-struct Kernel
+struct Lane
 {
 template<int M>
-static DCPRBF_ALWAYS_INLINE void run
+static DCPRBF_ALWAYS_INLINE void item
 (
-    const std::size_t n,
+    const std::size_t p,
     const std::size_t s,
     const double* __restrict in,
     double* __restrict out
 )
 {
-    #pragma omp simd
-    for (std::size_t p = 0; p < n; ++p)
-    {
-        const double* v = in + p;
-        #define DCPRBF_V3(k) V3{v[(3*(k))*s], v[(3*(k) + 1)*s], v[(3*(k) + 2)*s]}
-        Worst w;
-        addPrism<M>
-        (
-            w, out + p, s,
-            DCPRBF_V3(0), DCPRBF_V3(1), DCPRBF_V3(2), DCPRBF_V3(3), DCPRBF_V3(4), DCPRBF_V3(5),
-            DCPRBF_V3(6), DCPRBF_V3(7), DCPRBF_V3(8), DCPRBF_V3(9), DCPRBF_V3(10), DCPRBF_V3(11)
-        );
-        #undef DCPRBF_V3
-        out[p] = w.J;
-        out[s + p] = w.a2;
-        out[2*s + p] = w.key;
-        out[3*s + p] = w.other;
-        out[4*s + p] = w.beyond;
-    }
+    const double* v = in + p;
+    #define DCPRBF_V3(k) V3{v[(3*(k))*s], v[(3*(k) + 1)*s], v[(3*(k) + 2)*s]}
+    Worst w;
+    addPrism<M>
+    (
+        w, out + p, s,
+        DCPRBF_V3(0), DCPRBF_V3(1), DCPRBF_V3(2), DCPRBF_V3(3), DCPRBF_V3(4), DCPRBF_V3(5),
+        DCPRBF_V3(6), DCPRBF_V3(7), DCPRBF_V3(8), DCPRBF_V3(9), DCPRBF_V3(10), DCPRBF_V3(11)
+    );
+    #undef DCPRBF_V3
+    out[p] = w.J;
+    out[s + p] = w.a2;
+    out[2*s + p] = w.key;
+    out[3*s + p] = w.other;
+    out[4*s + p] = w.beyond;
 }
 };
 
@@ -165,7 +161,7 @@ static DCPRBF_ALWAYS_INLINE void run
 
 void PrismBatch::measure(const TetQuality::Metric metric, const bool wide)
 {
-    tetKernel::dispatch<Kernel>
+    tetKernel::dispatch<tetKernel::Lanes<Lane>>
     (
         metric, wide, lanes_.size(), lanes_.stride(), lanes_.inData(), lanes_.outData()
     );

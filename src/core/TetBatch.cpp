@@ -11,32 +11,28 @@ namespace dcprbf
 namespace
 {
 
-struct Kernel
+struct Lane
 {
 template<int M>
-static DCPRBF_ALWAYS_INLINE void run
+static DCPRBF_ALWAYS_INLINE void item
 (
-    const std::size_t n,
+    const std::size_t t,
     const std::size_t s,
     const double* __restrict in,
     double* __restrict out
 )
 {
-    #pragma omp simd
-    for (std::size_t t = 0; t < n; ++t)
-    {
-        const double* c = in + t;
-        double J, a2;
-        tetKernel::measures
-        (
-            c[0], c[s], c[2*s], c[3*s], c[4*s], c[5*s], c[6*s], c[7*s], c[8*s],
-            c[9*s], c[10*s], c[11*s], c[12*s], c[13*s], c[14*s], c[15*s], c[16*s], c[17*s],
-            J, a2
-        );
-        out[t] = J;
-        out[s + t] = a2;
-        out[2*s + t] = tetKernel::key<M>(J, a2);
-    }
+    const double* c = in + t;
+    double J, a2;
+    tetKernel::measures
+    (
+        c[0], c[s], c[2*s], c[3*s], c[4*s], c[5*s], c[6*s], c[7*s], c[8*s],
+        c[9*s], c[10*s], c[11*s], c[12*s], c[13*s], c[14*s], c[15*s], c[16*s], c[17*s],
+        J, a2
+    );
+    out[t] = J;
+    out[s + t] = a2;
+    out[2*s + t] = tetKernel::key<M>(J, a2);
 }
 };
 
@@ -84,7 +80,7 @@ void TetBatch::qualities
 
 void TetBatch::measure(const TetQuality::Metric metric, const bool wide)
 {
-    tetKernel::dispatch<Kernel>
+    tetKernel::dispatch<tetKernel::Lanes<Lane>>
     (
         metric, wide, lanes_.size(), lanes_.stride(), lanes_.inData(), lanes_.outData()
     );

@@ -175,6 +175,29 @@ DCPRBF_ALWAYS_INLINE double quality(const double J, const double a2)
 }
 
 
+//- A kernel for dispatch over items in SIMD lanes: Lane::item<M>(t, s,
+//  in, out) for every item t < n (components s apart)
+template<class Lane>
+struct Lanes
+{
+    template<int M>
+    static DCPRBF_ALWAYS_INLINE void run
+    (
+        const std::size_t n,
+        const std::size_t s,
+        const double* __restrict in,
+        double* __restrict out
+    )
+    {
+        #pragma omp simd
+        for (std::size_t t = 0; t < n; ++t)
+        {
+            Lane::template item<M>(t, s, in, out);
+        }
+    }
+};
+
+
 //- Kernel::run<M>(args) for the metric
 template<class Kernel, class... Args>
 DCPRBF_ALWAYS_INLINE void byMetric(const TetQuality::Metric metric, Args... args)

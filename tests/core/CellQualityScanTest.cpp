@@ -388,17 +388,21 @@ TEST(CellQualityScan, ExtremeTetrahedraCompareByTheirQuality)
 TEST(CellQualityScan, DegenerateReferenceCellsAreOne)
 {
     // a flat reference block: every tetrahedron degenerate, quality 1
-    // (TetQuality's convention) whatever the deformation
-    HexBlock b(2);
-    for (std::size_t i = 2; i < b.points.size(); i += 3) b.points[i] = 0;
-    const std::vector<double> p(deformed(b.points, 0.3, 17));
-    const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
-    std::vector<double> q(scan.size());
-    scan.measure(p.data(), q.data());
-    for (std::size_t c = 0; c < q.size(); ++c)
+    // (TetQuality's convention) whatever the deformation, on every path
+    for (const auto split : {HexBlock::Split::none, HexBlock::Split::prisms,
+                             HexBlock::Split::tets})
     {
-        EXPECT_EQ(b.reference(c, p, TetQuality::Metric::sizeShape), 1.0);
-        EXPECT_EQ(q[c], 1.0) << c;
+        HexBlock b(2, split);
+        for (std::size_t i = 2; i < b.points.size(); i += 3) b.points[i] = 0;
+        const std::vector<double> p(deformed(b.points, 0.3, 17));
+        const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
+        std::vector<double> q(scan.size());
+        scan.measure(p.data(), q.data());
+        for (std::size_t c = 0; c < q.size(); ++c)
+        {
+            EXPECT_EQ(b.reference(c, p, TetQuality::Metric::sizeShape), 1.0);
+            EXPECT_EQ(q[c], 1.0) << c;
+        }
     }
 }
 
@@ -464,22 +468,6 @@ TEST(CellQualityScan, ExtremePrismsAndTetrahedraCompareByTheirQuality)
             }
             expectExtremeAsTheReference(b, p, factor);
         }
-    }
-}
-
-
-TEST(CellQualityScan, DegenerateReferencePrismsAreOne)
-{
-    HexBlock b(2, HexBlock::Split::prisms);
-    for (std::size_t i = 2; i < b.points.size(); i += 3) b.points[i] = 0;
-    const std::vector<double> p(deformed(b.points, 0.3, 17));
-    const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
-    std::vector<double> q(scan.size());
-    scan.measure(p.data(), q.data());
-    for (std::size_t c = 0; c < q.size(); ++c)
-    {
-        EXPECT_EQ(b.reference(c, p, TetQuality::Metric::sizeShape), 1.0);
-        EXPECT_EQ(q[c], 1.0) << c;
     }
 }
 
