@@ -10,6 +10,32 @@
 namespace dcprbf
 {
 
+namespace
+{
+
+//- Row r of the compressed rows (from, fromStart) appended to (to, toStart)
+template<class T>
+void appendRow
+(
+    std::vector<T>& to,
+    std::vector<std::size_t>& toStart,
+    const std::vector<T>& from,
+    const std::vector<std::size_t>& fromStart,
+    const std::size_t r
+)
+{
+    to.insert
+    (
+        to.end(),
+        from.begin() + std::ptrdiff_t(fromStart[r]),
+        from.begin() + std::ptrdiff_t(fromStart[r + 1])
+    );
+    toStart.push_back(to.size());
+}
+
+} // namespace
+
+
 CellQualityScan::CellQualityScan
 (
     std::vector<std::size_t> cellStart,
@@ -67,13 +93,7 @@ CellQualityScan::CellQualityScan
         faces.reserve(cellFaces.size());
         for (const int c : order_)
         {
-            faces.insert
-            (
-                faces.end(),
-                cellFaces.begin() + std::ptrdiff_t(cellStart[c]),
-                cellFaces.begin() + std::ptrdiff_t(cellStart[c + 1])
-            );
-            start.push_back(faces.size());
+            appendRow(faces, start, cellFaces, cellStart, std::size_t(c));
         }
         cellStart.swap(start);
         cellFaces.swap(faces);
@@ -109,13 +129,7 @@ CellQualityScan::CellQualityScan
         entryStart.reserve(cellFaces.size() + 1);
         for (const int f : cellFaces)
         {
-            entryPoints.insert
-            (
-                entryPoints.end(),
-                facePoints_.begin() + std::ptrdiff_t(faceStart_[f]),
-                facePoints_.begin() + std::ptrdiff_t(faceStart_[f + 1])
-            );
-            entryStart.push_back(entryPoints.size());
+            appendRow(entryPoints, entryStart, facePoints_, faceStart_, std::size_t(f));
         }
         faceStart_.swap(entryStart);
         facePoints_.swap(entryPoints);
@@ -189,13 +203,7 @@ void CellQualityScan::classify(std::vector<std::size_t>& cellStart)
             slot_[i] = int(generalStart.size()) - 1;
             for (std::size_t k = k0; k < k0 + nFaces; ++k)
             {
-                entryPoints.insert
-                (
-                    entryPoints.end(),
-                    facePoints_.begin() + std::ptrdiff_t(faceStart_[k]),
-                    facePoints_.begin() + std::ptrdiff_t(faceStart_[k + 1])
-                );
-                entryStart.push_back(entryPoints.size());
+                appendRow(entryPoints, entryStart, facePoints_, faceStart_, k);
             }
             generalStart.push_back(entryStart.size() - 1);
         }
