@@ -30,25 +30,34 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
         quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
         return;
     }
+    // The cells whose reference centre (the average of their points) is
+    // within radius of a moving point: found in parallel (the search
+    // stops at the first point within reach), gathered in order
     const dcprbf::PointTree tree(movingPoints);
-    DynamicList<label> cells;
-    DynamicList<FixedList<scalar, 3>> centres;
-    forAll(mesh.cells(), celli)
+    const labelListList& cellPoints = mesh.cellPoints();
+    const auto centre = [&](const label celli)
     {
-        // reference centre: average of the cell's points
-        const labelList& cp = mesh.cellPoints()[celli];
         vector c(Zero);
-        for (const label pi : cp) c += points0[pi];
-        c /= cp.size();
-
+        for (const label pi : cellPoints[celli]) c += points0[pi];
+        c /= cellPoints[celli].size();
         FixedList<scalar, 3> x;
         projection.toCore(c, x.data());
-        scalar d2 = 0;
-        tree.nearest(x.data(), d2);
-        if (d2 < sqr(radius))
+        return x;
+    };
+    std::vector<char> inside(mesh.nCells());
+    #pragma omp parallel for schedule(dynamic, 4096)
+    for (label celli = 0; celli < mesh.nCells(); ++celli)
+    {
+        inside[celli] = tree.anyWithin(centre(celli).data(), radius);
+    }
+    DynamicList<label> cells;
+    DynamicList<FixedList<scalar, 3>> centres;
+    for (label celli = 0; celli < mesh.nCells(); ++celli)
+    {
+        if (inside[celli])
         {
             cells.append(celli);
-            centres.append(x);
+            centres.append(centre(celli));
         }
     }
     cells_.transfer(cells);

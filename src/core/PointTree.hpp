@@ -42,6 +42,14 @@ public:
         Eigen::Index& j
     );
 
+    //- Is a point closer than radius to q? (the search stops at the first)
+    bool anyWithin(const double* q, const double radius) const
+    {
+        AnyResult result{radius*radius};
+        tree_->findNeighbors(result, q, searchParams());
+        return result.found;
+    }
+
     //- Call f(index, distSq) for every point with |p - q| < radius
     template<class F>
     void forEachWithin(const double* q, double radius, F&& f) const
@@ -76,6 +84,21 @@ private:
         {
             if (distSq < radiusSq) f(std::size_t(i), distSq);
             return true;
+        }
+    };
+
+    //- nanoflann result set that stops the search at the first hit
+    struct AnyResult
+    {
+        double radiusSq;
+        bool found = false;
+        bool full() const { return true; }
+        std::size_t size() const { return 0; }
+        double worstDist() const { return radiusSq; }
+        bool addPoint(double distSq, std::uint32_t)
+        {
+            found = found || distSq < radiusSq;
+            return !found;
         }
     };
 

@@ -82,6 +82,27 @@ TEST(PointTree, RadiusSearchEqualsBruteForce)
     }
 }
 
+TEST(PointTree, AnyWithinEqualsBruteForce)
+{
+    // radii around the typical spacing: some queries with points in reach,
+    // some without (both counted)
+    const Points p = test::randomPoints(500, 3, 15);
+    const Points q = test::randomPoints(400, 3, 16);
+    const PointTree tree(p);
+    int yes = 0, no = 0;
+    for (const double R : {0.02, 0.05, 0.1})
+    {
+        for (Eigen::Index i = 0; i < q.rows(); ++i)
+        {
+            const bool brute = (p.rowwise() - q.row(i)).rowwise().norm().minCoeff() < R;
+            EXPECT_EQ(tree.anyWithin(q.row(i).data(), R), brute) << i << ' ' << R;
+            (brute ? yes : no)++;
+        }
+    }
+    EXPECT_GT(yes, 100);
+    EXPECT_GT(no, 100);
+}
+
 TEST(PointTree, NearestEqualsBruteForce)
 {
     const Points p = test::randomPoints(500, 3, 13);
