@@ -31,6 +31,7 @@
 
 #include "PrismBatch.hpp"
 #include "TetBatch.hpp"
+#include "WorstBatch.hpp"
 #include "TetQuality.hpp"
 
 #include <cstddef>

@@ -1,7 +1,7 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 #include "PlanarCellQualityScan.hpp"
 #include "PlanarMapBatch.hpp"
-#include "TetBatch.hpp"
+#include "WorstBatch.hpp"
 #include "TetMeasures.hpp"
 
 #include <algorithm>

@@ -86,18 +86,4 @@ void TetBatch::measure(const TetQuality::Metric metric, const bool wide)
     );
 }
 
-void WorstBatch::finish()
-{
-    q_.resize(J_.size());
-    TetBatch::qualities(J_.size(), J_.data(), a2_.data(), q_.data(), metric_, wide_);
-    for (std::size_t i = 0; i < q_.size(); ++i)
-    {
-        *dest_[i] = q_[i] < other_[i] ? q_[i] : other_[i];
-    }
-    J_.clear();
-    a2_.clear();
-    other_.clear();
-    dest_.clear();
-}
-
 } // namespace dcprbf

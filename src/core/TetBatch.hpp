@@ -18,7 +18,6 @@
 #pragma once
 
 #include "LaneArrays.hpp"
-#include "TetMeasures.hpp"
 #include "TetQuality.hpp"
 
 #include <cstddef>
@@ -83,47 +82,6 @@ public:
 private:
     //- In: 18 components (e0 ea eb f0 fa fb, x y z each); out: J, a2, key
     LaneArrays lanes_{18, 3};
-};
-
-//- Cells' worst tetrahedra (TetMeasures::Worst) to their qualities: the
-//  ranked ones' in SIMD lanes (TetBatch::qualities), the rest (beyond the
-//  lanes' range, none ranked) by Worst::quality(); each into its place
-class WorstBatch
-{
-public:
-    explicit WorstBatch(const TetQuality::Metric metric, const bool wide = true)
-    :
-        metric_(metric),
-        wide_(wide)
-    {}
-
-    //- The quality of w, to be written to *dest by finish()
-    inline void add(const TetMeasures::Worst& w, double* dest)
-    {
-        if (w.ranked() && w.J() >= 1e-30 && w.J() <= 1e30 && w.a2() < 1e25)
-        {
-            J_.push_back(w.J());
-            a2_.push_back(w.a2());
-            other_.push_back(w.other());
-            dest_.push_back(dest);
-        }
-        else
-        {
-            *dest = w.quality();
-        }
-    }
-
-    //- Write the qualities added since the last finish()
-    void finish();
-
-    //- The AVX2 build where there is one?
-    bool wide() const { return wide_; }
-
-private:
-    TetQuality::Metric metric_;
-    bool wide_;
-    std::vector<double> J_, a2_, other_, q_;
-    std::vector<double*> dest_;
 };
 
 } // namespace dcprbf

@@ -3,6 +3,7 @@
 // ranked range, the same on the AVX2 and the default build.
 #include "TetBatch.hpp"
 #include "TetMeasures.hpp"
+#include "WorstBatch.hpp"
 
 #include <gtest/gtest.h>
 
