@@ -212,27 +212,93 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
 }
 
 
-void StoredEvaluation::product(const Slot& s, const Values& alpha, Values& out) const
+namespace
+{
+
+//- out[0..C) = sum over the row's entries k of values[k]*a[C*inner[k] + .],
+//  in two interleaved partial sums (two independent addition chains)
+template<int C>
+inline void rowProduct
+(
+    int k,
+    const int end,
+    const double* values,
+    const int* inner,
+    const double* a,
+    double* out
+)
+{
+    double v0[C] = {}, v1[C] = {};
+    for (; k + 1 < end; k += 2)
+    {
+        const double* a0 = a + C*inner[k];
+        const double* a1 = a + C*inner[k + 1];
+        for (int q = 0; q < C; ++q)
+        {
+            v0[q] += values[k]*a0[q];
+            v1[q] += values[k + 1]*a1[q];
+        }
+    }
+    if (k < end)
+    {
+        const double* a0 = a + C*inner[k];
+        for (int q = 0; q < C; ++q) v0[q] += values[k]*a0[q];
+    }
+    for (int q = 0; q < C; ++q) out[q] = v0[q] + v1[q];
+}
+
+
+//- The right-hand sides' columns in the product: 2 when the last column of
+//  alpha and beta is zero (2D: the normal direction), else 3
+int activeColumns(const Values& alpha, const Eigen::MatrixX3d& beta)
+{
+    return alpha.col(2).isZero(0) && beta.col(2).isZero(0) ? 2 : 3;
+}
+
+} // namespace
+
+
+template<int C>
+void StoredEvaluation::product
+(
+    const Slot& s,
+    const Values& alpha,
+    const Eigen::MatrixX3d& beta,
+    Values& out
+) const
 {
     const std::ptrdiff_t n = x_.rows();
-    out.resize(n, 3);
+    const int P = int(basis_.cols());
+    // alpha and beta with C columns, contiguous
+    std::vector<double> a(C*alpha.rows()), b(C*P);
+    for (Eigen::Index j = 0; j < alpha.rows(); ++j)
+    {
+        for (int q = 0; q < C; ++q) a[C*j + q] = alpha(j, q);
+    }
+    for (int p = 0; p < P; ++p)
+    {
+        for (int q = 0; q < C; ++q) b[C*p + q] = beta(p, q);
+    }
     if (s.dense.size())
     {
         out.noalias() = s.dense*alpha;
-        return;
     }
-    const double* a = alpha.data();
     #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t i = 0; i < n; ++i)
     {
         double v[3] = {0, 0, 0};
-        for (int k = s.outer[i]; k < s.outer[i + 1]; ++k)
+        if (s.dense.size())
         {
-            const double w = s.values[k];
-            const double* aj = a + 3*s.inner[k];
-            v[0] += w*aj[0];
-            v[1] += w*aj[1];
-            v[2] += w*aj[2];
+            for (int q = 0; q < C; ++q) v[q] = out(i, q);
+        }
+        else
+        {
+            rowProduct<C>(s.outer[i], s.outer[i + 1], s.values.data(), s.inner.data(), a.data(), v);
+        }
+        const double* qi = basis_.data() + std::ptrdiff_t(P)*i;
+        for (int p = 0; p < P; ++p)
+        {
+            for (int q = 0; q < C; ++q) v[q] += qi[p]*b[C*p + q];
         }
         out(i, 0) = v[0];
         out(i, 1) = v[1];
@@ -248,15 +314,12 @@ void StoredEvaluation::evaluate
     Values& out
 ) const
 {
-    if (patch_.base < 0)
-    {
-        product(slots_[current_], alpha, out);
-    }
-    else
+    const Slot& s = slots_[patch_.base < 0 ? current_ : patch_.base];
+    Values a;
+    if (patch_.base >= 0)
     {
         // the shared centres through the stored matrix, the others alone
-        const Slot& s = slots_[patch_.base];
-        Values a = Values::Zero(s.centres.rows(), 3);
+        a = Values::Zero(s.centres.rows(), 3);
         for (std::size_t j = 0; j < patch_.column.size(); ++j)
         {
             if (patch_.column[j] >= 0)
@@ -264,21 +327,26 @@ void StoredEvaluation::evaluate
                 a.row(patch_.column[j]) = alpha.row(j);
             }
         }
-        product(s, a, out);
-        for (std::size_t e = 0; e < patch_.centre.size(); ++e)
-        {
-            const auto aj = alpha.row(patch_.centre[e]);
-            const std::vector<int>& rows = patch_.rows[e];
-            const std::vector<double>& values = patch_.values[e];
-            for (std::size_t k = 0; k < rows.size(); ++k)
-            {
-                out.row(rows[k]) += values[k]*aj;
-            }
-        }
     }
-    if (basis_.cols() > 0)
+    const Values& as = patch_.base < 0 ? alpha : a;
+    out.resize(x_.rows(), 3);
+    if (activeColumns(alpha, beta) == 2)
     {
-        out.noalias() += basis_*beta;
+        product<2>(s, as, beta, out);
+    }
+    else
+    {
+        product<3>(s, as, beta, out);
+    }
+    for (std::size_t e = 0; e < patch_.centre.size(); ++e)
+    {
+        const auto aj = alpha.row(patch_.centre[e]);
+        const std::vector<int>& rows = patch_.rows[e];
+        const std::vector<double>& values = patch_.values[e];
+        for (std::size_t k = 0; k < rows.size(); ++k)
+        {
+            out.row(rows[k]) += values[k]*aj;
+        }
     }
 }
 

@@ -90,13 +90,22 @@ private:
     //  it would take more than budget bytes
     bool patch(int k, const Points& centres, std::size_t budget);
 
-    //- out = K alpha for slot s
-    void product(const Slot& s, const Values& alpha, Values& out) const;
+    //- out = K alpha + Q beta for slot s, the first C columns (the others
+    //  zero); out sized
+    template<int C>
+    void product
+    (
+        const Slot& s,
+        const Values& alpha,
+        const Eigen::MatrixX3d& beta,
+        Values& out
+    ) const;
 
     RadialKernel kernel_;
     LinearPolynomial polynomial_;
     Points x_;
-    Eigen::MatrixXd basis_;     // Q(x): points x polynomial size
+    // Q(x): points x polynomial size, row-major (read with each row of K)
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> basis_;
     std::array<Slot, 2> slots_;
     int current_ = -1;
     Patch patch_;

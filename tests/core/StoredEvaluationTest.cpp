@@ -18,7 +18,9 @@ namespace
 class StoredCase : public ::testing::TestWithParam<test::KernelCase> {};
 
 //- Largest difference, relative, between the stored product of s for the
-//  centres c (prepared) and the evaluator on the points x, for smooth weights
+//  centres c (prepared) and the evaluator on the points x, for smooth weights;
+//  in 2D the last column of the weights zero (the product's two-column
+//  path: that column of the result exactly zero), unless lastColumn
 double storedVsEvaluator
 (
     const StoredEvaluation& s,
@@ -26,17 +28,23 @@ double storedVsEvaluator
     const LinearPolynomial& frame,
     const Points& x,
     const Points& c,
-    int dim
+    int dim,
+    bool lastColumn = false
 )
 {
     Values alpha = test::smoothField(c);
     Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
     if (dim == 2) { alpha.col(2).setZero(); }
+    if (dim == 2 && !lastColumn) { beta.col(2).setZero(); }
     RbfEvaluator e(k, frame);
     e.assign(c, alpha, beta);
     const Values expected = e.evaluate(x);
     Values got;
     s.evaluate(alpha, beta, got);
+    if (dim == 2 && !lastColumn)
+    {
+        EXPECT_TRUE(got.col(2).isZero(0));
+    }
     return (got - expected).cwiseAbs().maxCoeff()/(1 + expected.cwiseAbs().maxCoeff());
 }
 
@@ -51,6 +59,9 @@ TEST_P(StoredCase, EqualsTheEvaluator)
     ASSERT_TRUE(s.prepare(c, std::size_t(1) << 30));
     EXPECT_LT(storedVsEvaluator(s, k, frame, x, c, dim), 1e-12)
         << name << " poly " << poly << " " << dim << "D";
+    // the three-column path where only the polynomial has a last column
+    EXPECT_LT(storedVsEvaluator(s, k, frame, x, c, dim, true), 1e-12)
+        << name << " poly " << poly << " " << dim << "D, last column";
 }
 
 INSTANTIATE_TEST_SUITE_P(KernelsPolyDim, StoredCase, ::testing::ValuesIn(test::kernelCases()),
