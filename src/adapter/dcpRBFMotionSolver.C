@@ -17,7 +17,6 @@ License
 #include "valuePointPatchField.H"
 #include "pointConstraints.H"
 #include "syncTools.H"
-#include "twoDPointCorrector.H"
 #include "clockTime.H"
 #include "OFstream.H"
 #include "OSspecific.H"
@@ -165,10 +164,6 @@ void Foam::dcpRBFMotionSolver::constrain()
         mesh(), pointDisplacement_.primitiveFieldRef(), maxMagSqrEqOp<vector>()
     );
     pcs.constrainCorners(pointDisplacement_);
-    twoDPointCorrector::New(mesh()).correctDisplacement
-    (
-        mesh().points(), pointDisplacement_.primitiveFieldRef()
-    );
 }
 
 
@@ -180,7 +175,8 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     // evaluated once per distinct point (2D: the front and back twins)
     const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
     const dcprbf::Points& x = distinct_.points();
-    dcprbf::Values v(x.rows(), 3);
+    dcprbf::Values& v = values_;
+    v.resize(x.rows(), 3);
     const std::size_t budget = std::size_t(settings_.evaluationMemoryMB()) << 20;
     if (stored_.prepare(s.centres(), budget))
     {
@@ -193,19 +189,25 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     }
 
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    const bool rotating = rotation_.active();
     forAll(disp, pointi)
     {
         if (boundaryPoints_.kind(pointi) != dcpRBFBoundaryPoints::interiorPoint)
         {
             disp[pointi] = prescribed_[pointi];
-            continue;
         }
-        Eigen::RowVector3d u(v.row(distinct_.of(pointi)));
-        if (rotation_.active())
+        else if (rotating)
         {
-            u += rotation_.displacement().row(pointi);
+            const Eigen::RowVector3d u
+            (
+                v.row(distinct_.of(pointi)) + rotation_.displacement().row(pointi)
+            );
+            disp[pointi] = projection_.fromCore(u.data());
         }
-        disp[pointi] = projection_.fromCore(u.data());
+        else
+        {
+            disp[pointi] = projection_.fromCore(&v(distinct_.of(pointi), 0));
+        }
     }
 
     // Error at the boundary points, blended into the volume
@@ -315,7 +317,8 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::curPoints() const
 void Foam::dcpRBFMotionSolver::solve()
 {
     clockTime timer;
-    dcpRBFStepLog::record r;
+    step_ = dcpRBFStepLog::record();
+    dcpRBFStepLog::record& r = step_;
 
     // 1. swapRule nearest: swaps from the quality of the mesh as it is
     if (controlPoints_.ready() && controlPoints_.swapsBeforeSolve())
@@ -403,7 +406,24 @@ void Foam::dcpRBFMotionSolver::solve()
             disp[pointi] = prescribed_[pointi];
         }
     }
-    log_.write(r);
+    r.pointsTime = timer.timeIncrement();
+    if (!inNewPoints_)
+    {
+        log_.write(r);
+    }
+}
+
+
+Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
+{
+    inNewPoints_ = true;
+    solve();
+    inNewPoints_ = false;
+    clockTime timer;
+    tmp<pointField> tpoints(curPoints());
+    step_.pointsTime += timer.elapsedTime();
+    log_.write(step_);
+    return tpoints;
 }
 
 

@@ -34,7 +34,7 @@ void Foam::dcpRBFStepLog::write(const record& r)
         << (r.atMaxPoints ? " (at maxPoints)" : "")
         << ", time swap " << r.swapTime << " select " << r.selectTime
         << " interpolate " << r.interpolateTime << " guard " << r.guardTime
-        << " s" << endl;
+        << " points " << r.pointsTime << " s" << endl;
 
     if (!Pstream::master())
     {
@@ -53,7 +53,7 @@ void Foam::dcpRBFStepLog::write(const record& r)
             << "# dcpRBF motion solver, one row per step" << nl
             << "# time nControl nAdded nRemoved nGuard nCells minQuality"
             << " meanQuality boundaryError atMaxPoints swapTime selectTime"
-            << " interpolateTime guardTime nUndone" << endl;
+            << " interpolateTime guardTime nUndone pointsTime" << endl;
     }
     file_()
         << time_.timeName() << ' ' << r.nControl << ' ' << r.nAdded << ' '
@@ -61,7 +61,7 @@ void Foam::dcpRBFStepLog::write(const record& r)
         << r.minQuality << ' ' << r.meanQuality << ' ' << r.boundaryError
         << ' ' << label(r.atMaxPoints) << ' ' << r.swapTime << ' '
         << r.selectTime << ' ' << r.interpolateTime << ' ' << r.guardTime
-        << ' ' << r.nUndone << endl;
+        << ' ' << r.nUndone << ' ' << r.pointsTime << endl;
 }
 
 
