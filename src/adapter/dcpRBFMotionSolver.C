@@ -21,6 +21,8 @@ License
 #include "OFstream.H"
 #include "OSspecific.H"
 
+#include <cstring>
+
 #ifdef _OPENMP
     #include <omp.h>
 #endif
@@ -391,13 +393,25 @@ void Foam::dcpRBFMotionSolver::solve()
         pointDisplacement_.primitiveFieldRef() = prescribed_;
     }
 
-    // The fixed-value conditions' values inserted (not re-evaluated), the
-    // constraints applied, as OpenFOAM's own displacement solvers do; then
-    // the listed patches' rule, the same on every processor: moving points
+    // The fixed-value conditions' values inserted (not re-evaluated: this
+    // completes the step's one evaluation), the constraints applied as
+    // pointConstraints::constrainDisplacement does, but for its 2D
+    // correction of the displacement: curPoints() corrects the points, so
+    // the displacement stays the one the quality was measured for. Then the
+    // listed patches' rule, the same on every processor: moving points
     // where prescribed (also where a static patch's condition says
     // otherwise), static points in place
-    pointConstraints::New(pointDisplacement_.mesh())
-        .constrainDisplacement(pointDisplacement_, false);
+    pointDisplacement_.setUpToDate();
+    pointDisplacement_.storeOldTimes();
+    pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
+    forAll(bf, patchi)
+    {
+        if (bf[patchi].fixesValue())
+        {
+            bf[patchi].evaluate();
+        }
+    }
+    constrain();
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
     forAll(disp, pointi)
     {
@@ -420,7 +434,19 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
     solve();
     inNewPoints_ = false;
     clockTime timer;
-    tmp<pointField> tpoints(curPoints());
+    // the points the quality was measured on, if the displacement is the
+    // one they were made from (bitwise), else made anew
+    const vectorField& disp = pointDisplacement_.primitiveField();
+    const bool measured =
+        lastDisplacement_.size() == disp.size()
+     && std::memcmp
+        (
+            disp.cdata(), lastDisplacement_.cdata(), disp.size()*sizeof(vector)
+        ) == 0;
+    tmp<pointField> tpoints
+    (
+        measured ? tmp<pointField>(new pointField(lastPoints_)) : curPoints()
+    );
     step_.pointsTime += timer.elapsedTime();
     log_.write(step_);
     return tpoints;

@@ -21,6 +21,7 @@ void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
         tmp<pointField> tp(curPoints());
         lastPoints_.transfer(tp.ref());
     }
+    lastDisplacement_ = pointDisplacement_.primitiveField();
     lastQuality_ =
         region_.measure(lastPoints_, max(label(1), settings_.selection().nSwap));
     r.nCells = lastQuality_.nCells;
@@ -135,6 +136,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
     // swaps, or they are abandoned
     dcpRBFQualityRegion::summary noSwap(std::move(lastQuality_));
     pointField noSwapPoints(std::move(lastPoints_));
+    vectorField noSwapDisplacement(std::move(lastDisplacement_));
     if (!rescue && settings_.selection().swapBlendSteps > 1)
     {
         r.boundaryError = interpolateDisplacement(d);
@@ -154,6 +156,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
     pointDisplacement_.primitiveFieldRef() = noSwapField;
     lastQuality_ = std::move(noSwap);
     lastPoints_.transfer(noSwapPoints);
+    lastDisplacement_.transfer(noSwapDisplacement);
     const label nUndone = r.nUndone;
     r = noSwapRecord;
     r.nUndone = nUndone + kept;
@@ -258,6 +261,7 @@ Foam::dcpRBFMotionSolver::currentQuality()
         lastQuality_ =
             region_.measure(p, max(label(1), settings_.selection().nSwap));
         lastPoints_ = p;
+        lastDisplacement_.clear();     // the mesh's points: none of ours
     }
     return lastQuality_;
 }

@@ -266,11 +266,49 @@ bumpRun runBump(const std::string& controlPoints, label nSteps, label n = 16,
             return vector(0, a*std::sin(2*constant::mathematical::pi*x.x()), 0);
         });
         const pointField p(ms->newPoints());
+        // the new points (the measured ones, reused when the displacement
+        // is the one they were made from) are those of the displacement
+        // the step leaves, bitwise, after trials, rescues and blends too
+        const pointField fresh(ms->curPoints());
+        scalar d = 0;
+        forAll(p, i) d = max(d, mag(p[i] - fresh[i]));
+        EXPECT_EQ(d, 0) << "step " << step << ": newPoints() != curPoints()";
         c.mesh().movePoints(p);
         b.points.push_back(p);
     }
     b.rows = stepRows(c);
     return b;
+}
+
+// A patch in neither list moves with the interpolated displacement, then
+// its own condition applies (here fixedValue zero): the step's new points
+// are not the ones the quality was measured on, and newPoints() must make
+// them anew from the displacement it leaves
+TEST(NewPoints, AreThoseOfTheFinalDisplacementWhenAConditionOverridesIt)
+{
+    testCase c(2, 12, "movingPatches (bottom); staticPatches (left right); supportRadius 0.8;"
+        " controlPoints { selection greedy; }");
+    autoPtr<motionSolver> ms(select(c));
+    auto& solver = refCast<dcpRBFMotionSolver>(ms());
+    const label top = c.mesh().boundaryMesh().findPatchID("top");
+    for (label step = 1; step <= 2; ++step)
+    {
+        ++c.runTime();
+        const scalar a = 0.1*step;
+        prescribe(solver.pointDisplacement(), "bottom", [a](const point&) { return vector(0, a, 0); });
+        const pointField p(ms->newPoints());
+        const pointField fresh(ms->curPoints());
+        scalar d = 0;
+        forAll(p, i) d = max(d, mag(p[i] - fresh[i]));
+        EXPECT_EQ(d, 0) << "step " << step;
+        scalar topMoved = 0;
+        for (const label pointi : c.mesh().boundaryMesh()[top].meshPoints())
+        {
+            topMoved = max(topMoved, mag(p[pointi] - solver.points0()[pointi]));
+        }
+        EXPECT_LT(topMoved, 1e-15) << "step " << step << ": the top's fixedValue zero";
+        c.mesh().movePoints(p);
+    }
 }
 
 //- Minimum quality per step of the bump run
