@@ -131,8 +131,26 @@ void Foam::dcpRBFMotionSolver::readPrescribed()
     pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
     bf.updateCoeffs();
 
-    prescribed_.setSize(mesh().nPoints());
-    prescribed_ = Zero;
+    // Only moving points hold a value: zero elsewhere once, then only the
+    // moving points cleared (a pass over every point costs as much as the
+    // rest of this function)
+    if (prescribed_.size() != mesh().nPoints())
+    {
+        prescribed_.setSize(mesh().nPoints());
+        prescribed_ = Zero;
+        movingMeshPoints_.clear();
+        forAll(prescribed_, pointi)
+        {
+            if (boundaryPoints_.kind(pointi) == dcpRBFBoundaryPoints::movingPoint)
+            {
+                movingMeshPoints_.append(pointi);
+            }
+        }
+    }
+    for (const label pointi : movingMeshPoints_)
+    {
+        prescribed_[pointi] = Zero;
+    }
     for (const label patchi : settings_.movingPatchIDs())
     {
         // fixesValue() was checked at construction (checkPatches)
