@@ -9,7 +9,10 @@ License
 #include "dcpRBFBoundaryCorrection.H"
 #include "PointTree.hpp"
 #include "RadialKernel.hpp"
+#include "DynamicList.H"
+#include "UIndirectList.H"
 
+#include <algorithm>
 #include <cmath>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -21,8 +24,6 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
     const scalar maxRadius
 )
 :
-    nearest_(evalPoints.rows(), -1),
-    distance_(evalPoints.rows(), GREAT),
     maxRadius_(maxRadius)
 {
     if (boundary.size() == 0)
@@ -30,18 +31,39 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
         return;
     }
     const dcprbf::PointTree tree(boundary.points());
+    const label n = label(evalPoints.rows());
+    labelList nearest(n, -1);
+    scalarField distance(n, GREAT);
 
     #pragma omp parallel for schedule(static)
-    for (label i = 0; i < label(evalPoints.rows()); ++i)
+    for (label i = 0; i < n; ++i)
     {
         if (boundary.kind(i) != dcpRBFBoundaryPoints::interiorPoint)
         {
             continue;
         }
         double d2 = 0;
-        nearest_[i] = tree.nearest(evalPoints.row(i).data(), d2);
-        distance_[i] = std::sqrt(d2);
+        nearest[i] = tree.nearest(evalPoints.row(i).data(), d2);
+        distance[i] = std::sqrt(d2);
     }
+
+    // ascending distance (ties by point: the same order on any thread count)
+    DynamicList<label> interior(n);
+    for (label i = 0; i < n; ++i)
+    {
+        if (nearest[i] >= 0) interior.append(i);
+    }
+    std::sort
+    (
+        interior.begin(), interior.end(),
+        [&](const label a, const label b)
+        {
+            return distance[a] < distance[b] || (distance[a] == distance[b] && a < b);
+        }
+    );
+    point_.transfer(interior);
+    nearest_ = labelList(UIndirectList<label>(nearest, point_));
+    distance_ = scalarField(UIndirectList<scalar>(distance, point_));
 }
 
 
@@ -61,13 +83,10 @@ Foam::scalar Foam::dcpRBFBoundaryCorrection::apply
         return 0;
     }
     const dcprbf::kernels::WendlandC2 phi{1.0/R};
-    forAll(displacement, i)
+    for (label k = 0; k < point_.size() && distance_[k] < R; ++k)
     {
-        if (nearest_[i] >= 0 && distance_[i] < R)
-        {
-            displacement[i] +=
-                phi(distance_[i])*projection.fromCore(error.row(nearest_[i]).data());
-        }
+        displacement[point_[k]] +=
+            phi(distance_[k])*projection.fromCore(error.row(nearest_[k]).data());
     }
     return R;
 }

@@ -4,6 +4,7 @@
 #include "TetMeasures.hpp"
 
 #include <algorithm>
+#include <memory>
 
 namespace dcprbf
 {
@@ -171,7 +172,8 @@ void CellQualityScan::measureBlock
 void CellQualityScan::measure(const double* p, double* q, const bool wide) const
 {
     const long nPoints = long(pointIds_.size());
-    std::vector<double> x(3*pointIds_.size());
+    // filled in parallel below: not value-initialised (a serial pass)
+    const std::unique_ptr<double[]> x(new double[3*pointIds_.size()]);
     const std::size_t n = size();
     const long nBlocks = long((n + blockCells - 1)/blockCells);
     #pragma omp parallel
@@ -189,7 +191,7 @@ void CellQualityScan::measure(const double* p, double* q, const bool wide) const
         for (long b = 0; b < nBlocks; ++b)
         {
             const std::size_t i0 = std::size_t(b)*blockCells;
-            measureBlock(i0, std::min(blockCells, n - i0), x.data(), s, q);
+            measureBlock(i0, std::min(blockCells, n - i0), x.get(), s, q);
         }
     }
 }

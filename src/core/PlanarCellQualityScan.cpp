@@ -5,6 +5,7 @@
 #include "TetMeasures.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 namespace dcprbf
@@ -158,7 +159,8 @@ void PlanarCellQualityScan::addMaps
 void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide) const
 {
     const long nPoints = long(pointIds_.size());
-    std::vector<double> x(2*pointIds_.size());
+    // filled in parallel below: not value-initialised (a serial pass)
+    const std::unique_ptr<double[]> x(new double[2*pointIds_.size()]);
     const long n = long(size());
     #pragma omp parallel
     {
@@ -182,7 +184,7 @@ void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide)
             maps.resize(mapStart_[i1] - m0);
             for (std::size_t i = i0; i < i1; ++i)
             {
-                addMaps(i, x.data(), maps, mapStart_[i] - m0);
+                addMaps(i, x.get(), maps, mapStart_[i] - m0);
             }
             maps.measure(metric_, wide);
             for (std::size_t i = i0; i < i1; ++i)
