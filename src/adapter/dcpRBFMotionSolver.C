@@ -127,7 +127,8 @@ void Foam::dcpRBFMotionSolver::setThreads() const
 void Foam::dcpRBFMotionSolver::readPrescribed()
 {
     // The only evaluation of the conditions this step: constrain() and the
-    // final constrainDisplacement() insert the values without re-evaluating
+    // final constraints (end of solve()) insert the values without
+    // re-evaluating
     pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
     bf.updateCoeffs();
 
@@ -453,7 +454,8 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
     inNewPoints_ = false;
     clockTime timer;
     // the points the quality was measured on, if the displacement is the
-    // one they were made from (bitwise), else made anew
+    // one they were made from (bitwise), else made anew. The measured ones
+    // by reference (OpenFOAM's callers copy them or read them at once)
     const vectorField& disp = pointDisplacement_.primitiveField();
     const bool measured =
         lastDisplacement_.size() == disp.size()
@@ -463,7 +465,7 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
         ) == 0;
     tmp<pointField> tpoints
     (
-        measured ? tmp<pointField>(new pointField(lastPoints_)) : curPoints()
+        measured ? tmp<pointField>(lastPoints_) : curPoints()
     );
     step_.pointsTime += timer.elapsedTime();
     log_.write(step_);
