@@ -14,14 +14,9 @@ License
 #include "wedgePolyPatch.H"
 #include "processorPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
-#include "valuePointPatchField.H"
-#include "pointConstraints.H"
-#include "syncTools.H"
 #include "clockTime.H"
 #include "OFstream.H"
 #include "OSspecific.H"
-
-#include <cstring>
 
 #ifdef _OPENMP
     #include <omp.h>
@@ -124,131 +119,6 @@ void Foam::dcpRBFMotionSolver::setThreads() const
 }
 
 
-void Foam::dcpRBFMotionSolver::readPrescribed()
-{
-    // The only evaluation of the conditions this step: constrain() and the
-    // final constraints (end of solve()) insert the values without
-    // re-evaluating
-    pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
-    bf.updateCoeffs();
-
-    // Only moving points hold a value: zero elsewhere once, then only the
-    // moving points cleared (a pass over every point costs as much as the
-    // rest of this function)
-    if (prescribed_.size() != mesh().nPoints())
-    {
-        prescribed_.setSize(mesh().nPoints());
-        prescribed_ = Zero;
-        movingMeshPoints_.clear();
-        forAll(prescribed_, pointi)
-        {
-            if (boundaryPoints_.kind(pointi) == dcpRBFBoundaryPoints::movingPoint)
-            {
-                movingMeshPoints_.append(pointi);
-            }
-        }
-    }
-    for (const label pointi : movingMeshPoints_)
-    {
-        prescribed_[pointi] = Zero;
-    }
-    for (const label patchi : settings_.movingPatchIDs())
-    {
-        // fixesValue() was checked at construction (checkPatches)
-        bf[patchi].setInInternalField
-        (
-            prescribed_,
-            refCast<const valuePointPatchField<vector>>(bf[patchi])
-        );
-    }
-    // Points of a moving patch held by a processor without its faces
-    syncTools::syncPointList
-    (
-        mesh(), prescribed_, maxMagSqrEqOp<vector>(), vector::zero
-    );
-}
-
-
-void Foam::dcpRBFMotionSolver::constrain()
-{
-    pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
-    forAll(bf, patchi)
-    {
-        if (!bf[patchi].fixesValue())
-        {
-            bf[patchi].evaluate();
-        }
-    }
-    const pointConstraints& pcs = pointConstraints::New(pointDisplacement_.mesh());
-    pointConstraints::syncUntransformedData
-    (
-        mesh(), pointDisplacement_.primitiveFieldRef(), maxMagSqrEqOp<vector>()
-    );
-    pcs.constrainCorners(pointDisplacement_);
-}
-
-
-Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
-(
-    const dcprbf::Values& d
-)
-{
-    // evaluated once per distinct point (2D: the front and back twins)
-    const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
-    const dcprbf::Points& x = distinct_.points();
-    dcprbf::Values& v = values_;
-    v.resize(x.rows(), 3);
-    const std::size_t budget = std::size_t(settings_.evaluationMemoryMB()) << 20;
-    if (stored_.prepare(s.centres(), budget))
-    {
-        // the control set's matrix is stored: one product
-        stored_.evaluate(s.weights(), s.polynomialCoeffs(), v);
-    }
-    else
-    {
-        s.evaluate(x.data(), x.rows(), v.data());
-    }
-
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
-    const bool rotating = rotation_.active();
-    forAll(disp, pointi)
-    {
-        if (boundaryPoints_.kind(pointi) != dcpRBFBoundaryPoints::interiorPoint)
-        {
-            disp[pointi] = prescribed_[pointi];
-        }
-        else if (rotating)
-        {
-            const Eigen::RowVector3d u
-            (
-                v.row(distinct_.of(pointi)) + rotation_.displacement().row(pointi)
-            );
-            disp[pointi] = projection_.fromCore(u.data());
-        }
-        else
-        {
-            disp[pointi] = projection_.fromCore(&v(distinct_.of(pointi), 0));
-        }
-    }
-
-    // Error at the boundary points, blended into the volume
-    const dcprbf::Values error(d - s.evaluate(boundaryPoints_.points()));
-    if (settings_.boundaryCorrection())
-    {
-        correction_.apply(error, projection_, disp);
-    }
-    constrain();
-
-    scalar err = 0;
-    forAll(boundaryPoints_.moving(), i)
-    {
-        if (boundaryPoints_.moving()[i]) err = max(err, error.row(i).norm());
-    }
-    const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
-    return dMax > 0 ? err/dMax : 0;
-}
-
-
 void Foam::dcpRBFMotionSolver::writeControlPoints(const dcprbf::Values& d) const
 {
     if (!Pstream::master())
@@ -323,17 +193,6 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::curPoints() const
-{
-    tmp<pointField> tcurPoints
-    (
-        points0() + pointDisplacement_.primitiveField()
-    );
-    twoDCorrectPoints(tcurPoints.ref());
-    return tcurPoints;
-}
-
 
 void Foam::dcpRBFMotionSolver::solve()
 {
@@ -412,64 +271,12 @@ void Foam::dcpRBFMotionSolver::solve()
         pointDisplacement_.primitiveFieldRef() = prescribed_;
     }
 
-    // The fixed-value conditions' values inserted (not re-evaluated: this
-    // completes the step's one evaluation), the constraints applied as
-    // pointConstraints::constrainDisplacement does, but for its 2D
-    // correction of the displacement: curPoints() corrects the points, so
-    // the displacement stays the one the quality was measured for. Then the
-    // listed patches' rule, the same on every processor: moving points
-    // where prescribed (also where a static patch's condition says
-    // otherwise), static points in place
-    pointDisplacement_.setUpToDate();
-    pointDisplacement_.storeOldTimes();
-    pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
-    forAll(bf, patchi)
-    {
-        if (bf[patchi].fixesValue())
-        {
-            bf[patchi].evaluate();
-        }
-    }
-    constrain();
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
-    forAll(disp, pointi)
-    {
-        if (boundaryPoints_.kind(pointi) != dcpRBFBoundaryPoints::interiorPoint)
-        {
-            disp[pointi] = prescribed_[pointi];
-        }
-    }
+    finishDisplacement();
     r.pointsTime = timer.timeIncrement();
     if (!inNewPoints_)
     {
         log_.write(r);
     }
-}
-
-
-Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
-{
-    inNewPoints_ = true;
-    solve();
-    inNewPoints_ = false;
-    clockTime timer;
-    // the points the quality was measured on, if the displacement is the
-    // one they were made from (bitwise), else made anew. The measured ones
-    // by reference (OpenFOAM's callers copy them or read them at once)
-    const vectorField& disp = pointDisplacement_.primitiveField();
-    const bool measured =
-        lastDisplacement_.size() == disp.size()
-     && std::memcmp
-        (
-            disp.cdata(), lastDisplacement_.cdata(), disp.size()*sizeof(vector)
-        ) == 0;
-    tmp<pointField> tpoints
-    (
-        measured ? tmp<pointField>(lastPoints_) : curPoints()
-    );
-    step_.pointsTime += timer.elapsedTime();
-    log_.write(step_);
-    return tpoints;
 }
 
 
