@@ -184,8 +184,21 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
             IOobject::READ_IF_PRESENT,
             IOobject::AUTO_WRITE
         )
+    ),
+    boundaryStored_
+    (
+        settings.kernel(), set_.evaluator().polynomial(), boundary.points()
     )
 {
+    forAll(boundary_.moving(), i)
+    {
+        if (boundary_.moving()[i]) movingIndex_.push_back(i);
+    }
+    movingPoints_.resize(Eigen::Index(movingIndex_.size()), 3);
+    for (std::size_t k = 0; k < movingIndex_.size(); ++k)
+    {
+        movingPoints_.row(k) = boundary_.points().row(movingIndex_[k]);
+    }
     try
     {
         ready_ = readState();
@@ -269,20 +282,48 @@ Foam::scalar Foam::dcpRBFControlPoints::boundaryError
     label& worst
 ) const
 {
-    const dcprbf::Values s(set_.evaluator().evaluate(boundary_.points()));
+    // stored: at every candidate, one product; else the moving ones alone
+    const dcprbf::Values all(storedBoundary() ? boundaryValues() : dcprbf::Values());
+    const dcprbf::Values moving
+    (
+        all.rows() ? dcprbf::Values() : set_.evaluator().evaluate(movingPoints_)
+    );
     scalar err = 0;
     worst = -1;
-    forAll(boundary_.moving(), i)
+    for (std::size_t k = 0; k < movingIndex_.size(); ++k)
     {
-        const scalar e = (s.row(i) - d.row(i)).norm();
-        if (boundary_.moving()[i] && e > err)
+        const Eigen::Index i = movingIndex_[k];
+        const scalar e =
+            ((all.rows() ? all.row(i) : moving.row(k)) - d.row(i)).norm();
+        if (e > err)
         {
             err = e;
-            worst = i;
+            worst = label(i);
         }
     }
     const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
     return dMax > 0 ? err/dMax : 0;
+}
+
+
+bool Foam::dcpRBFControlPoints::storedBoundary() const
+{
+    const std::size_t budget =
+        (std::size_t(settings_.evaluationMemoryMB()) << 20)/16;
+    return boundaryStored_.prepare(set_.evaluator().centres(), budget);
+}
+
+
+dcprbf::Values Foam::dcpRBFControlPoints::boundaryValues() const
+{
+    const dcprbf::RbfEvaluator& s = set_.evaluator();
+    if (!storedBoundary())
+    {
+        return s.evaluate(boundary_.points());
+    }
+    dcprbf::Values v;
+    boundaryStored_.evaluate(s.weights(), s.polynomialCoeffs(), v);
+    return v;
 }
 
 

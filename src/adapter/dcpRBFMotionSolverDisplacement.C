@@ -129,7 +129,7 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     }
 
     // Error at the boundary points, blended into the volume
-    const dcprbf::Values error(d - s.evaluate(boundaryPoints_.points()));
+    const dcprbf::Values error(d - controlPoints_.boundaryValues());
     if (settings_.boundaryCorrection())
     {
         correction_.apply(error, projection_, disp);

@@ -488,6 +488,31 @@ TEST(StoredEvaluation, MovesTheMeshAsEvaluationOnTheFly)
     }
 }
 
+// The interpolant at the candidates (boundary error of the selection and
+// the correction) from stored matrices equals the evaluator's, as the set
+// changes over steps (swaps: patched matrices; additions)
+TEST(StoredEvaluation, BoundaryValuesEqualTheEvaluator)
+{
+    testCase c(3, 6, patches + " controlPoints { selection dynamic; tolerance 1e-3; }");
+    autoPtr<motionSolver> ms(select(c));
+    auto& solver = refCast<dcpRBFMotionSolver>(ms());
+    const dcpRBFControlPoints& cp = solver.controlPoints();
+    std::set<std::vector<Eigen::Index>> sets;
+    for (label step = 1; step <= 4; ++step)
+    {
+        ++c.runTime();
+        const scalar a = 0.05*step;
+        prescribe(solver.pointDisplacement(), "bottom", [a](const point& x) { return bump(x, a); });
+        c.mesh().movePoints(ms->newPoints());
+        sets.insert(cp.set().indices());
+        const dcprbf::Values stored(cp.boundaryValues());
+        const dcprbf::Values direct(cp.evaluator().evaluate(cp.candidates()));
+        ASSERT_EQ(stored.rows(), direct.rows());
+        EXPECT_LT((stored - direct).cwiseAbs().maxCoeff(), 1e-13) << "step " << step;
+    }
+    EXPECT_GT(sets.size(), 1u) << "the set never changed";
+}
+
 } // namespace
 
 // ************************************************************************* //
