@@ -283,18 +283,23 @@ Foam::scalar Foam::dcpRBFControlPoints::boundaryError
 ) const
 {
     // stored: at every candidate, one product; else the moving ones alone
-    const dcprbf::Values all(storedBoundary() ? boundaryValues() : dcprbf::Values());
-    const dcprbf::Values moving
-    (
-        all.rows() ? dcprbf::Values() : set_.evaluator().evaluate(movingPoints_)
-    );
+    const dcprbf::RbfEvaluator& ev = set_.evaluator();
+    const bool all = storedBoundary();
+    dcprbf::Values s;
+    if (all)
+    {
+        boundaryStored_.evaluate(ev.weights(), ev.polynomialCoeffs(), s);
+    }
+    else
+    {
+        s = ev.evaluate(movingPoints_);
+    }
     scalar err = 0;
     worst = -1;
     for (std::size_t k = 0; k < movingIndex_.size(); ++k)
     {
         const Eigen::Index i = movingIndex_[k];
-        const scalar e =
-            ((all.rows() ? all.row(i) : moving.row(k)) - d.row(i)).norm();
+        const scalar e = (s.row(all ? i : Eigen::Index(k)) - d.row(i)).norm();
         if (e > err)
         {
             err = e;

@@ -488,6 +488,40 @@ TEST(StoredEvaluation, MovesTheMeshAsEvaluationOnTheFly)
     }
 }
 
+// The re-selection's boundary error from stored matrices (the moving
+// candidates' rows of the product at every candidate) picks the same points
+// as on the fly; the moving patch is not the first, so its candidates are
+// not the first rows
+TEST(StoredEvaluation, ReselectionAsOnTheFly)
+{
+    std::vector<std::vector<Eigen::Index>> sets[2];
+    for (const int stored : {0, 1})
+    {
+        testCase c(2, 12, "movingPatches (top); staticPatches (bottom left right); supportRadius 0.8;"
+            " controlPoints { selection greedy; tolerance 1e-2; reselectTolerance 2e-2; }"
+            + std::string(stored ? "" : " evaluationMemoryMB 0;"));
+        autoPtr<motionSolver> ms(select(c));
+        auto& solver = refCast<dcpRBFMotionSolver>(ms());
+        const dcpRBFControlPoints& cp = solver.controlPoints();
+        for (label step = 1; step <= 4; ++step)
+        {
+            ++c.runTime();
+            // the shape changes from step to step: the set must grow
+            prescribe(solver.pointDisplacement(), "top", [step](const point& x)
+            {
+                return vector(0, -0.05*std::sin(constant::mathematical::pi*x.x())*pow(x.x(), 2*step), 0);
+            });
+            c.mesh().movePoints(ms->newPoints());
+            sets[stored].push_back(cp.set().indices());
+        }
+    }
+    EXPECT_GT(sets[1].back().size(), sets[1].front().size()) << "no re-selection happened";
+    for (std::size_t s = 0; s < sets[0].size(); ++s)
+    {
+        EXPECT_EQ(sets[0][s], sets[1][s]) << "step " << s + 1;
+    }
+}
+
 // The interpolant at the candidates (boundary error of the selection and
 // the correction) from stored matrices equals the evaluator's, as the set
 // changes over steps (swaps: patched matrices; additions)
