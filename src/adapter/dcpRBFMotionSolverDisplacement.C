@@ -152,7 +152,11 @@ void Foam::dcpRBFMotionSolver::finishDisplacement()
     // completes the step's one evaluation), the constraints applied as
     // pointConstraints::constrainDisplacement does, but for its 2D
     // correction of the displacement: curPoints() corrects the points, so
-    // the displacement stays the one the quality was measured for. Then the
+    // the displacement stays the one the quality was measured for. (In 2D
+    // the interior front and back twins have the same displacement by
+    // construction: one value per distinct point, the correction by the
+    // same nearest boundary point; the boundary points get their prescribed
+    // values below, as before.) Then the
     // listed patches' rule, the same on every processor: moving points
     // where prescribed (also where a static patch's condition says
     // otherwise), static points in place
@@ -191,9 +195,16 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::curPoints() const
 
 Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
 {
-    inNewPoints_ = true;
-    solve();
-    inNewPoints_ = false;
+    {
+        // the flag reset however solve() ends (FatalError may throw)
+        struct scope
+        {
+            bool& flag;
+            explicit scope(bool& f) : flag(f) { flag = true; }
+            ~scope() { flag = false; }
+        } inNewPoints(inNewPoints_);
+        solve();
+    }
     clockTime timer;
     // the points the quality was measured on, if the displacement is the
     // one they were made from (bitwise), else made anew. The measured ones
@@ -201,6 +212,7 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
     const vectorField& disp = pointDisplacement_.primitiveField();
     const bool measured =
         lastDisplacement_.size() == disp.size()
+     && disp.size() > 0
      && std::memcmp
         (
             disp.cdata(), lastDisplacement_.cdata(), disp.size()*sizeof(vector)

@@ -109,6 +109,12 @@ bool StoredEvaluation::prepare(const Points& centres, std::size_t budgetBytes)
             return true;
         }
     }
+    // refused before with no more room: refused again at once (a step
+    // whose set does not fit does not pay the count pass again)
+    if (same(refused_) && budgetBytes <= refusedBudget_)
+    {
+        return false;
+    }
     // a patch of the current slot, else of the other
     for (const int k : {current_, 1 - current_})
     {
@@ -123,11 +129,15 @@ bool StoredEvaluation::prepare(const Points& centres, std::size_t budgetBytes)
     const int k = current_ == 0 ? 1 : 0;
     const std::size_t other = slots_[1 - k].bytes();
     current_ = -1;
+    ++attempts_;
     if (other > budgetBytes || !build(centres, budgetBytes - other, slots_[k]))
     {
         slots_[k] = Slot();
+        refused_ = centres;
+        refusedBudget_ = budgetBytes;
         return false;
     }
+    refused_.resize(0, 3);
     ++builds_;
     current_ = k;
     return true;

@@ -54,6 +54,10 @@ public:
     //- Number of matrix builds so far
     int builds() const { return builds_; }
 
+    //- Number of builds tried (refused ones too; a set refused with no
+    //  more budget is not tried again)
+    int attempts() const { return attempts_; }
+
     //- Columns computed alone for the current centres (0: no patch)
     int patchColumns() const { return int(patch_.centre.size()); }
 
@@ -110,6 +114,9 @@ private:
     int current_ = -1;
     Patch patch_;
     int builds_ = 0;
+    int attempts_ = 0;
+    Points refused_;                // the last set refused, and its budget
+    std::size_t refusedBudget_ = 0;
 };
 
 } // namespace dcprbf

@@ -87,10 +87,16 @@ TEST(StoredEvaluation, ReusesTheTwoLastSetsAndKeepsTheBudget)
     EXPECT_EQ(s.builds(), 1);
     EXPECT_GT(s.bytes(), 0u);
 
-    // a budget below one matrix: nothing stored, the caller evaluates itself
+    // a budget below one matrix: nothing stored, the caller evaluates itself;
+    // asked again with no more room, not tried again; with room, built
     StoredEvaluation small(k, frame, x);
     EXPECT_FALSE(small.prepare(a, 64));
     EXPECT_EQ(small.bytes(), 0u);
+    EXPECT_FALSE(small.prepare(a, 64));
+    EXPECT_EQ(small.attempts(), 1);
+    EXPECT_TRUE(small.prepare(a, budget));
+    EXPECT_EQ(small.attempts(), 2);
+    EXPECT_EQ(small.builds(), 1);
 }
 
 // A set that differs from the stored one by swaps, additions or removals is
