@@ -221,6 +221,7 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
     (
         measured ? tmp<pointField>(lastPoints_) : curPoints()
     );
+    nReusedPoints_ += measured;
     step_.pointsTime += timer.elapsedTime();
     log_.write(step_);
     return tpoints;
