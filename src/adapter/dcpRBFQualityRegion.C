@@ -7,6 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFQualityRegion.H"
+#include "MortonOrder.hpp"
 #include "PointTree.hpp"
 #include "Pstream.H"
 
@@ -50,18 +51,28 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     {
         inside[celli] = tree.anyWithin(centre(celli).data(), radius);
     }
-    DynamicList<label> cells;
-    DynamicList<FixedList<scalar, 3>> centres;
+    // In the order the flat scan visits them (Morton order of the first
+    // point of their first face, as dcprbf::CellQualityScan keys them): it
+    // then writes the qualities in sequence, not scattered
+    std::vector<label> found;
+    std::vector<double> key;
     for (label celli = 0; celli < mesh.nCells(); ++celli)
     {
         if (inside[celli])
         {
-            cells.append(celli);
-            centres.append(centre(celli));
+            found.push_back(celli);
+            const point& x = points0[mesh.faces()[mesh.cells()[celli][0]][0]];
+            key.insert(key.end(), {x.x(), x.y(), x.z()});
         }
     }
-    cells_.transfer(cells);
-    centres_.transfer(centres);
+    const std::vector<int> order(dcprbf::mortonOrder(key.data(), found.size()));
+    cells_.setSize(label(found.size()));
+    centres_.setSize(label(found.size()));
+    forAll(cells_, i)
+    {
+        cells_[i] = found[order[i]];
+        centres_[i] = centre(cells_[i]);
+    }
     quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
 }
 
