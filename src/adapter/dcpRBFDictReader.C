@@ -25,9 +25,14 @@ void Foam::dcpRBFDictReader::checkKeywords(const wordList& known) const
     {
         if (!known.found(e.keyword()))
         {
+            string allowed;
+            for (const word& w : known)
+            {
+                allowed += (allowed.empty() ? "" : " ") + w;
+            }
             FatalIOErrorInFunction(dict_)
                 << "Unknown keyword " << e.keyword() << " in "
-                << dict_.dictName() << ". Allowed keywords: " << known
+                << dict_.dictName() << ". Allowed keywords: " << allowed.c_str()
                 << exit(FatalIOError);
         }
     }

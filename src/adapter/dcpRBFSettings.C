@@ -36,6 +36,27 @@ const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
     const dictionary& dict
 )
 {
+    // Without a dcpRBFCoeffs sub-dictionary the motion solver is given the
+    // whole dynamicMeshDict: say so, not "unknown keyword dynamicFvMesh"
+    if (dict.found("motionSolver") || dict.found("dynamicFvMesh"))
+    {
+        string near;
+        for (const entry& e : dict)
+        {
+            if (e.isDict() && e.keyword().starts_with("dcpRBF"))
+            {
+                near = " (found " + e.keyword() + ": the name is dcpRBFCoeffs)";
+            }
+        }
+        FatalIOErrorInFunction(dict)
+            << "No dcpRBFCoeffs sub-dictionary in " << dict.name() << near.c_str()
+            << ". The dcpRBF settings go in it, e.g." << nl
+            << "    dcpRBFCoeffs" << nl << "    {" << nl
+            << "        movingPatches (wing);" << nl
+            << "        staticPatches (inlet outlet);" << nl
+            << "        supportRadius 2.5;" << nl << "    }" << nl
+            << exit(FatalIOError);
+    }
     dcpRBFDictReader(dict).checkKeywords
     ({
         "movingPatches", "staticPatches", "function", "supportRadius",
@@ -118,9 +139,10 @@ void Foam::dcpRBFSettings::checkPatchLists
         if (staticPatchIDs_.found(patchi))
         {
             FatalIOErrorInFunction(dict)
-                << "Patch " << patches[patchi].name() << " is named in both"
-                << " movingPatches and staticPatches: a patch either moves"
-                << " or stays put" << exit(FatalIOError);
+                << "Patch " << patches[patchi].name() << " is matched by both"
+                << " movingPatches and staticPatches (by name, regular"
+                << " expression or group): a patch either moves or stays put"
+                << exit(FatalIOError);
         }
     }
     for (const word keyword : {"movingPatches", "staticPatches"})

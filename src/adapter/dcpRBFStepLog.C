@@ -30,7 +30,7 @@ void Foam::dcpRBFStepLog::write(const record& r)
     }
     Info<< (r.rescue ? ", rescue" : "") << "), quality min "
         << r.minQuality << " mean " << r.meanQuality << " (" << r.nCells
-        << " cells in reach), boundary error " << r.boundaryError
+        << " cells in reach), relative boundary error " << r.boundaryError
         << (r.atMaxPoints ? " (at maxPoints)" : "")
         << ", time swap " << r.swapTime << " select " << r.selectTime
         << " interpolate " << r.interpolateTime << " guard " << r.guardTime

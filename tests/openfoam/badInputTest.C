@@ -115,6 +115,43 @@ INSTANTIATE_TEST_SUITE_P
     [](const auto& info) { return info.param.name; }
 );
 
+
+// Without dcpRBFCoeffs (the settings at the top level, or the sub-dictionary
+// misnamed) the error names dcpRBFCoeffs, not a top-level keyword
+TEST(BadInput, MissingCoeffsDictionaryIsNamed)
+{
+    testCase c(2, 3, "movingPatches (bottom); staticPatches (top left right); supportRadius 0.5;");
+    for (const word misnamed : {word::null, word("dcpRBFCoeff")})
+    {
+        IOdictionary d(c.dynamicMeshDict());
+        const dictionary coeffs(d.subDict("dcpRBFCoeffs"));
+        d.remove("dcpRBFCoeffs");
+        if (misnamed.empty())
+        {
+            d.merge(coeffs);
+        }
+        else
+        {
+            d.add(misnamed, coeffs);
+        }
+        try
+        {
+            autoPtr<motionSolver> ms(motionSolver::New(c.mesh(), d));
+            FAIL() << "no error without dcpRBFCoeffs";
+        }
+        catch (const Foam::IOerror& e)
+        {
+            EXPECT_NE(e.message().find("No dcpRBFCoeffs sub-dictionary"), std::string::npos)
+                << "message: " << e.message();
+            if (!misnamed.empty())
+            {
+                EXPECT_NE(e.message().find("found dcpRBFCoeff:"), std::string::npos)
+                    << "message: " << e.message();
+            }
+        }
+    }
+}
+
 } // namespace
 
 // ************************************************************************* //
