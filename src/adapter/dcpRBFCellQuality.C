@@ -180,12 +180,20 @@ Foam::scalarField Foam::dcpRBFCellQuality::compute
 
 Foam::scalarField Foam::dcpRBFCellQuality::compute(const pointField& p) const
 {
+    scalarField q;
+    compute(p, q);
+    return q;
+}
+
+
+void Foam::dcpRBFCellQuality::compute(const pointField& p, scalarField& q) const
+{
     if (!scan_.valid())
     {
         FatalErrorInFunction
             << "No cells given at construction" << abort(FatalError);
     }
-    scalarField q(nCells_);
+    q.setSize(nCells_);
     const auto measure = [&](const auto& scan, const labelList& positions)
     {
         if (positions.size() == q.size())
@@ -204,7 +212,6 @@ Foam::scalarField Foam::dcpRBFCellQuality::compute(const pointField& p) const
     {
         measure(*planarScan_, planar_);
     }
-    return q;
 }
 
 

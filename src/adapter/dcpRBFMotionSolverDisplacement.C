@@ -182,13 +182,24 @@ void Foam::dcpRBFMotionSolver::finishDisplacement()
 }
 
 
+void Foam::dcpRBFMotionSolver::currentPoints(pointField& p) const
+{
+    // points0 + displacement (as Field's operator+), in p's storage
+    const pointField& p0 = points0();
+    const vectorField& d = pointDisplacement_.primitiveField();
+    p.setSize(p0.size());
+    forAll(p, pointi)
+    {
+        p[pointi] = p0[pointi] + d[pointi];
+    }
+    twoDCorrectPoints(p);
+}
+
+
 Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::curPoints() const
 {
-    tmp<pointField> tcurPoints
-    (
-        points0() + pointDisplacement_.primitiveField()
-    );
-    twoDCorrectPoints(tcurPoints.ref());
+    tmp<pointField> tcurPoints(new pointField(points0().size()));
+    currentPoints(tcurPoints.ref());
     return tcurPoints;
 }
 

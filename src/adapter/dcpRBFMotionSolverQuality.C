@@ -17,13 +17,13 @@ Description
 
 void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
 {
-    {
-        tmp<pointField> tp(curPoints());
-        lastPoints_.transfer(tp.ref());
-    }
+    currentPoints(lastPoints_);
     lastDisplacement_ = pointDisplacement_.primitiveField();
-    lastQuality_ =
-        region_.measure(lastPoints_, max(label(1), settings_.selection().nSwap));
+    lastQuality_ = region_.measure
+    (
+        lastPoints_, max(label(1), settings_.selection().nSwap),
+        std::move(lastQuality_.quality)
+    );
     r.nCells = lastQuality_.nCells;
     r.minQuality = lastQuality_.minQuality;
     r.meanQuality = lastQuality_.meanQuality;
@@ -258,8 +258,11 @@ Foam::dcpRBFMotionSolver::currentQuality()
     }
     if (!returnReduce(same, andOp<bool>()))
     {
-        lastQuality_ =
-            region_.measure(p, max(label(1), settings_.selection().nSwap));
+        lastQuality_ = region_.measure
+        (
+            p, max(label(1), settings_.selection().nSwap),
+            std::move(lastQuality_.quality)
+        );
         lastPoints_ = p;
         lastDisplacement_.clear();     // the mesh's points: none of ours
     }

@@ -124,10 +124,12 @@ Foam::labelList Foam::dcpRBFQualityRegion::within
 Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
 (
     const pointField& p,
-    const label n
+    const label n,
+    scalarField&& reuse
 ) const
 {
-    scalarField q(quality(p));
+    scalarField q(std::move(reuse));
+    quality_->compute(p, q);
 
     // Per block of cells (fixed, whatever the thread count: the sum and
     // so the mean are the same on any number of threads): the number

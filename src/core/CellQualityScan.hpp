@@ -35,6 +35,7 @@
 #include "TetQuality.hpp"
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace dcprbf
@@ -63,7 +64,9 @@ public:
 
     //- Quality of every cell for the points p (x y z per point, indexed
     //  as the reference points) into q (wide false: the SIMD kernels'
-    //  default-target build even where AVX2 is there; the same values)
+    //  default-target build even where AVX2 is there; the same values;
+    //  not to be called concurrently on one scan: a scratch copy of the
+    //  points is kept)
     void measure(const double* p, double* q, bool wide = true) const;
 
 private:
@@ -95,6 +98,9 @@ private:
 
     //- Their reference coordinates (x y z)
     std::vector<double> points0_;
+
+    //- The current points in that order (measure's scratch, kept)
+    mutable std::unique_ptr<double[]> compact_;
     TetQuality::Metric metric_;
 
     //- The general cells' reference face centres per entry (x y z) and

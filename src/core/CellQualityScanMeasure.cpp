@@ -172,8 +172,13 @@ void CellQualityScan::measureBlock
 void CellQualityScan::measure(const double* p, double* q, const bool wide) const
 {
     const long nPoints = long(pointIds_.size());
-    // filled in parallel below: not value-initialised (a serial pass)
-    const std::unique_ptr<double[]> x(new double[3*pointIds_.size()]);
+    // filled in parallel below: not value-initialised (a serial pass);
+    // allocated once (fresh pages each step cost page faults)
+    if (!compact_)
+    {
+        compact_.reset(new double[3*pointIds_.size()]);
+    }
+    double* const x = compact_.get();
     const std::size_t n = size();
     const long nBlocks = long((n + blockCells - 1)/blockCells);
     #pragma omp parallel
@@ -191,7 +196,7 @@ void CellQualityScan::measure(const double* p, double* q, const bool wide) const
         for (long b = 0; b < nBlocks; ++b)
         {
             const std::size_t i0 = std::size_t(b)*blockCells;
-            measureBlock(i0, std::min(blockCells, n - i0), x.get(), s, q);
+            measureBlock(i0, std::min(blockCells, n - i0), x, s, q);
         }
     }
 }

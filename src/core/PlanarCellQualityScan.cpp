@@ -159,8 +159,13 @@ void PlanarCellQualityScan::addMaps
 void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide) const
 {
     const long nPoints = long(pointIds_.size());
-    // filled in parallel below: not value-initialised (a serial pass)
-    const std::unique_ptr<double[]> x(new double[2*pointIds_.size()]);
+    // filled in parallel below: not value-initialised (a serial pass);
+    // allocated once (fresh pages each step cost page faults)
+    if (!compact_)
+    {
+        compact_.reset(new double[2*pointIds_.size()]);
+    }
+    double* const x = compact_.get();
     const long n = long(size());
     #pragma omp parallel
     {
@@ -184,7 +189,7 @@ void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide)
             maps.resize(mapStart_[i1] - m0);
             for (std::size_t i = i0; i < i1; ++i)
             {
-                addMaps(i, x.get(), maps, mapStart_[i] - m0);
+                addMaps(i, x, maps, mapStart_[i] - m0);
             }
             maps.measure(metric_, wide);
             for (std::size_t i = i0; i < i1; ++i)

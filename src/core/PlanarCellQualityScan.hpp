@@ -27,6 +27,7 @@
 #include "TetQuality.hpp"
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace dcprbf
@@ -54,7 +55,9 @@ public:
 
     //- Quality of every cell for the points p (x y z per point, indexed
     //  as the reference points) into q (wide false: the SIMD kernels'
-    //  default-target build even where AVX2 is there; the same values)
+    //  default-target build even where AVX2 is there; the same values;
+    //  not to be called concurrently on one scan: a scratch copy of the
+    //  points is kept)
     void measure(const double* p, double* q, bool wide = true) const;
 
 private:
@@ -64,6 +67,9 @@ private:
     std::vector<int> polygonPoints_;
     std::vector<int> pointIds_;
     int axis0_, axis1_;
+
+    //- The current in-plane points in that order (measure's scratch, kept)
+    mutable std::unique_ptr<double[]> compact_;
     TetQuality::Metric metric_;
 
     //- Per map (a triangle cell: one, its own; a polygon of n >= 4
