@@ -33,7 +33,7 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     }
     // The cells whose reference centre (the average of their points) is
     // within radius of a moving point: found in parallel (the search
-    // stops at the first point within reach), gathered in order
+    // stops at the first point within reach)
     const dcprbf::PointTree tree(movingPoints);
     const labelListList& cellPoints = mesh.cellPoints();
     const auto centre = [&](const label celli)

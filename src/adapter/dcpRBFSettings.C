@@ -38,12 +38,16 @@ const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
 {
     // Without a dcpRBFCoeffs sub-dictionary the motion solver is given the
     // whole dynamicMeshDict: say so, not "unknown keyword dynamicFvMesh"
-    if (dict.found("motionSolver") || dict.found("dynamicFvMesh"))
+    if (dict.found("motionSolver") || dict.found("solver") || dict.found("dynamicFvMesh"))
     {
         string near;
         for (const entry& e : dict)
         {
-            if (e.isDict() && e.keyword().starts_with("dcpRBF"))
+            if
+            (
+                e.isDict() && e.keyword().starts_with("dcpRBF")
+             && e.keyword() != "dcpRBFFvMeshCoeffs"
+            )
             {
                 near = " (found " + e.keyword() + ": the name is dcpRBFCoeffs)";
             }

@@ -121,7 +121,7 @@ INSTANTIATE_TEST_SUITE_P
 TEST(BadInput, MissingCoeffsDictionaryIsNamed)
 {
     testCase c(2, 3, "movingPatches (bottom); staticPatches (top left right); supportRadius 0.5;");
-    for (const word misnamed : {word::null, word("dcpRBFCoeff")})
+    for (const word& misnamed : {word::null, word("dcpRBFCoeff")})
     {
         IOdictionary d(c.dynamicMeshDict());
         const dictionary coeffs(d.subDict("dcpRBFCoeffs"));
