@@ -15,15 +15,22 @@ Description
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::dcpRBFMotionSolver::measureRegion(const pointField& p)
+{
+    // the qualities into the last measurement's storage
+    lastQuality_ = region_.measure
+    (
+        p, max(label(1), settings_.selection().nSwap),
+        std::move(lastQuality_.quality)
+    );
+}
+
+
 void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
 {
     currentPoints(lastPoints_);
     lastDisplacement_ = pointDisplacement_.primitiveField();
-    lastQuality_ = region_.measure
-    (
-        lastPoints_, max(label(1), settings_.selection().nSwap),
-        std::move(lastQuality_.quality)
-    );
+    measureRegion(lastPoints_);
     r.nCells = lastQuality_.nCells;
     r.minQuality = lastQuality_.minQuality;
     r.meanQuality = lastQuality_.meanQuality;
@@ -258,11 +265,7 @@ Foam::dcpRBFMotionSolver::currentQuality()
     }
     if (!returnReduce(same, andOp<bool>()))
     {
-        lastQuality_ = region_.measure
-        (
-            p, max(label(1), settings_.selection().nSwap),
-            std::move(lastQuality_.quality)
-        );
+        measureRegion(p);
         lastPoints_ = p;
         lastDisplacement_.clear();     // the mesh's points: none of ours
     }

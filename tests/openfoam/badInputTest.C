@@ -121,12 +121,21 @@ INSTANTIATE_TEST_SUITE_P
 TEST(BadInput, MissingCoeffsDictionaryIsNamed)
 {
     testCase c(2, 3, "movingPatches (bottom); staticPatches (top left right); supportRadius 0.5;");
-    for (const word& misnamed : {word::null, word("dcpRBFCoeff")})
+    // at the top level; misnamed; at the top level with only the legacy
+    // selection keyword "solver" (no dynamicFvMesh, no motionSolver)
+    for (const word& misnamed : {word::null, word("dcpRBFCoeff"), word("solver")})
     {
         IOdictionary d(c.dynamicMeshDict());
         const dictionary coeffs(d.subDict("dcpRBFCoeffs"));
         d.remove("dcpRBFCoeffs");
-        if (misnamed.empty())
+        if (misnamed == "solver")
+        {
+            d.remove("dynamicFvMesh");
+            d.remove("motionSolver");
+            d.add("solver", word("dcpRBF"));
+            d.merge(coeffs);
+        }
+        else if (misnamed.empty())
         {
             d.merge(coeffs);
         }
@@ -143,7 +152,7 @@ TEST(BadInput, MissingCoeffsDictionaryIsNamed)
         {
             EXPECT_NE(e.message().find("No dcpRBFCoeffs sub-dictionary"), std::string::npos)
                 << "message: " << e.message();
-            if (!misnamed.empty())
+            if (misnamed == "dcpRBFCoeff")
             {
                 EXPECT_NE(e.message().find("found dcpRBFCoeff:"), std::string::npos)
                     << "message: " << e.message();
