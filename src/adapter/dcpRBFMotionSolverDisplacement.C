@@ -192,7 +192,7 @@ void Foam::dcpRBFMotionSolver::currentPoints(pointField& p) const
     {
         p[pointi] = p0[pointi] + d[pointi];
     }
-    twoDCorrectPoints(p);
+    twoDPoints_.correct(p);
 }
 
 
