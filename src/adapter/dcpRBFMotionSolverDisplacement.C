@@ -107,24 +107,48 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     }
 
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
-    const bool rotating = rotation_.active();
-    forAll(disp, pointi)
+    if (rotation_.active())
     {
-        if (boundaryPoints_.kind(pointi) != dcpRBFBoundaryPoints::interiorPoint)
+        forAll(disp, pointi)
         {
-            disp[pointi] = prescribed_[pointi];
+            if (boundaryPoints_.kind(pointi) != dcpRBFBoundaryPoints::interiorPoint)
+            {
+                disp[pointi] = prescribed_[pointi];
+            }
+            else
+            {
+                const Eigen::RowVector3d u
+                (
+                    v.row(distinct_.of(pointi)) + rotation_.displacement().row(pointi)
+                );
+                disp[pointi] = projection_.fromCore(u.data());
+            }
         }
-        else if (rotating)
+    }
+    else
+    {
+        // projection_.fromCore in one loop: the axes in locals (not
+        // reloaded after each store, as the compiler must for char members)
+        const label a0 = projection_.axis(0), a1 = projection_.axis(1), a2 = projection_.axis(2);
+        const bool threeD = projection_.dim() == 3;
+        const dcpRBFBoundaryPoints::pointKind* kind = boundaryPoints_.kinds().cdata();
+        const point* prescribed = prescribed_.cdata();
+        vector* out = disp.data();
+        const label n = disp.size();
+        for (label pointi = 0; pointi < n; ++pointi)
         {
-            const Eigen::RowVector3d u
-            (
-                v.row(distinct_.of(pointi)) + rotation_.displacement().row(pointi)
-            );
-            disp[pointi] = projection_.fromCore(u.data());
-        }
-        else
-        {
-            disp[pointi] = projection_.fromCore(&v(distinct_.of(pointi), 0));
+            if (kind[pointi] != dcpRBFBoundaryPoints::interiorPoint)
+            {
+                out[pointi] = prescribed[pointi];
+            }
+            else
+            {
+                const double* c = &v(distinct_.of(pointi), 0);
+                vector& o = out[pointi];
+                o[a0] = c[0];
+                o[a1] = c[1];
+                o[a2] = threeD ? c[2] : 0.0;
+            }
         }
     }
 
