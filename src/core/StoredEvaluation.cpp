@@ -11,8 +11,9 @@ namespace dcprbf
 
 std::size_t StoredEvaluation::Slot::bytes() const
 {
-    return outer.size()*sizeof(int) + inner.size()*sizeof(int)
-        + values.size()*sizeof(double) + dense.size()*sizeof(double);
+    return outer.size()*sizeof(std::size_t) + inner.size()*sizeof(std::uint16_t)
+        + inner32.size()*sizeof(int) + values.size()*sizeof(double)
+        + dense.size()*sizeof(double);
 }
 
 
@@ -55,29 +56,41 @@ bool StoredEvaluation::build(const Points& c, std::size_t budget, Slot& s) const
         // two passes over a tree of the centres: count, then fill
         const PointTree tree(c);
         const double R = kernel_.radius();
-        std::vector<int> count(n + 1, 0);
+        std::vector<std::size_t> count(n + 1, 0);
         #pragma omp parallel for schedule(dynamic, 256)
         for (std::ptrdiff_t i = 0; i < n; ++i)
         {
-            int k = 0;
+            std::size_t k = 0;
             tree.forEachWithin(x_.row(i).data(), R, [&](std::size_t, double) { ++k; });
             count[i + 1] = k;
         }
         std::partial_sum(count.begin(), count.end(), count.begin());
         const std::size_t nnz = count.back();
-        if ((n + 1 + nnz)*sizeof(int) + nnz*sizeof(double) > budget) return false;
+        const bool narrow = c.rows() <= 65536;
+        const std::size_t indexBytes = narrow ? sizeof(std::uint16_t) : sizeof(int);
+        if ((n + 1)*sizeof(std::size_t) + nnz*(indexBytes + sizeof(double)) > budget)
+        {
+            return false;
+        }
         s.outer = std::move(count);
-        s.inner.resize(nnz);
+        (narrow ? s.inner.resize(nnz) : s.inner32.resize(nnz));
         s.values.resize(nnz);
         kernel_.visit([&](const auto& phi)
         {
             #pragma omp parallel for schedule(dynamic, 256)
             for (std::ptrdiff_t i = 0; i < n; ++i)
             {
-                int k = s.outer[i];
+                std::size_t k = s.outer[i];
                 tree.forEachWithin(x_.row(i).data(), R, [&](std::size_t j, double d2)
                 {
-                    s.inner[k] = int(j);
+                    if (narrow)
+                    {
+                        s.inner[k] = std::uint16_t(j);
+                    }
+                    else
+                    {
+                        s.inner32[k] = int(j);
+                    }
                     s.values[k++] = phi.ofSquared(d2);
                 });
             }
@@ -227,13 +240,13 @@ namespace
 
 //- out[0..C) = sum over the row's entries k of values[k]*a[C*inner[k] + .],
 //  in two interleaved partial sums (two independent addition chains)
-template<int C>
+template<int C, class Index>
 inline void rowProduct
 (
-    int k,
-    const int end,
+    std::size_t k,
+    const std::size_t end,
     const double* values,
-    const int* inner,
+    const Index* inner,
     const double* a,
     double* out
 )
@@ -303,7 +316,14 @@ void StoredEvaluation::product
         }
         else
         {
-            rowProduct<C>(s.outer[i], s.outer[i + 1], s.values.data(), s.inner.data(), a.data(), v);
+            if (s.inner32.empty())
+            {
+                rowProduct<C>(s.outer[i], s.outer[i + 1], s.values.data(), s.inner.data(), a.data(), v);
+            }
+            else
+            {
+                rowProduct<C>(s.outer[i], s.outer[i + 1], s.values.data(), s.inner32.data(), a.data(), v);
+            }
         }
         const double* qi = basis_.data() + std::ptrdiff_t(P)*i;
         for (int p = 0; p < P; ++p)

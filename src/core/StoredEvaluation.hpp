@@ -19,6 +19,7 @@
 #include "RadialKernel.hpp"
 #include <Eigen/SparseCore>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace dcprbf
@@ -65,8 +66,11 @@ private:
     struct Slot
     {
         Points centres;
-        // compact kernels: CSR rows (outer), columns (inner), values
-        std::vector<int> outer, inner;
+        // compact kernels: CSR rows (outer), columns (inner: 16 bits
+        // while the centres are at most 65536, else inner32), values
+        std::vector<std::size_t> outer;
+        std::vector<std::uint16_t> inner;
+        std::vector<int> inner32;
         std::vector<double> values;
         // global kernels
         Eigen::MatrixXd dense;

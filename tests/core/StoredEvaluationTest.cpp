@@ -67,6 +67,39 @@ TEST_P(StoredCase, EqualsTheEvaluator)
 INSTANTIATE_TEST_SUITE_P(KernelsPolyDim, StoredCase, ::testing::ValuesIn(test::kernelCases()),
     test::kernelCaseName);
 
+TEST(StoredEvaluation, MoreCentresThanSixteenBitColumnsEqualTheEvaluator)
+{
+    // columns stored in 16 bits up to 65536 centres, in 32 bits beyond:
+    // both sides of the switch against the evaluator (a 16-bit column
+    // beyond it would wrap to another centre)
+    const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.08);
+    const LinearPolynomial frame(true, 3);
+    const Points x = randomPoints(200, 3, 41);
+    for (const int n : {65536, 65600})
+    {
+        const Points c = randomPoints(n, 3, 42);
+        StoredEvaluation s(k, frame, x);
+        ASSERT_TRUE(s.prepare(c, std::size_t(1) << 30));
+        EXPECT_LT(storedVsEvaluator(s, k, frame, x, c, 3), 1e-12) << n << " centres";
+        // the bytes: per entry a value and a column of 2 bytes up to
+        // 65536 centres, of 4 beyond
+        std::size_t entries = 0;
+        for (Eigen::Index i = 0; i < x.rows(); ++i)
+        {
+            for (Eigen::Index j = 0; j < c.rows(); ++j)
+            {
+                entries += (x.row(i) - c.row(j)).squaredNorm() < 0.08*0.08;
+            }
+        }
+        EXPECT_GT(entries, std::size_t(100)*x.rows()) << n << " centres";
+        EXPECT_EQ
+        (
+            s.bytes(),
+            (x.rows() + 1)*sizeof(std::size_t) + entries*(sizeof(double) + (n <= 65536 ? 2 : 4))
+        ) << n << " centres";
+    }
+}
+
 TEST(StoredEvaluation, ReusesTheTwoLastSetsAndKeepsTheBudget)
 {
     const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.3);
