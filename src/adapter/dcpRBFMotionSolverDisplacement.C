@@ -71,7 +71,11 @@ void Foam::dcpRBFMotionSolver::constrain()
     pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
     forAll(bf, patchi)
     {
-        if (!bf[patchi].fixesValue())
+        if (slipPatches_.handles(patchi))
+        {
+            slipPatches_.evaluate(pointDisplacement_, patchi);
+        }
+        else if (!bf[patchi].fixesValue())
         {
             bf[patchi].evaluate();
         }

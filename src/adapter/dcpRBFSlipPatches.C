@@ -1,0 +1,74 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF: radial-basis-function mesh motion with dynamic control points
+-------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
+\*---------------------------------------------------------------------------*/
+
+#include "dcpRBFSlipPatches.H"
+#include "slipPointPatchField.H"
+#include "symmetryPointPatchField.H"
+#include "facePointPatch.H"
+#include "primitivePatch.H"
+#include "transformField.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFSlipPatches::dcpRBFSlipPatches
+(
+    const pointVectorField& displacement,
+    const pointField& points0
+)
+:
+    slip_(displacement.boundaryField().size(), false),
+    normals0_(displacement.boundaryField().size())
+{
+    const polyMesh& mesh = displacement.mesh().mesh();
+    forAll(displacement.boundaryField(), patchi)
+    {
+        const pointPatchVectorField& pf = displacement.boundaryField()[patchi];
+        const bool slip =
+            isA<slipPointPatchField<vector>>(pf)
+         || isA<symmetryPointPatchField<vector>>(pf);
+        if (!slip || !isA<facePointPatch>(pf.patch()))
+        {
+            continue;
+        }
+        const polyPatch& pp = refCast<const facePointPatch>(pf.patch()).patch();
+        // the patch's faces on the reference points: the same local point
+        // order as the patch (first appearance in its faces)
+        const primitivePatch pp0
+        (
+            SubList<face>(mesh.faces(), pp.size(), pp.start()),
+            points0
+        );
+        if (pp0.meshPoints() != pp.meshPoints())
+        {
+            FatalErrorInFunction
+                << "Patch " << pp.name() << ": the reference patch's points"
+                << " differ from the patch's" << abort(FatalError);
+        }
+        slip_[patchi] = true;
+        normals0_[patchi] = pp0.pointNormals();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dcpRBFSlipPatches::evaluate
+(
+    pointVectorField& displacement,
+    const label patchi
+) const
+{
+    const pointPatchVectorField& pf = displacement.boundaryField()[patchi];
+    const vectorField& nHat = normals0_[patchi];
+    const vectorField v(pf.patchInternalField());
+    const vectorField values((v + transform(I - 2.0*sqr(nHat), v))/2.0);
+    pf.setInInternalField(displacement.primitiveFieldRef(), values);
+}
+
+
+// ************************************************************************* //
