@@ -9,6 +9,7 @@ License
 #include "dcpRBFStepLog.H"
 #include "OSspecific.H"
 #include "Pstream.H"
+#include "OStringStream.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -22,19 +23,25 @@ Foam::dcpRBFStepLog::dcpRBFStepLog(const Time& runTime)
 
 void Foam::dcpRBFStepLog::write(const record& r)
 {
-    Info<< "dcpRBF: control points " << r.nControl << " (+" << r.nAdded
+    // 4 significant digits for the qualities and the error, 3 for the
+    // times in ms, whatever the case's writePrecision
+    OStringStream line;
+    line.precision(4);
+    line<< "dcpRBF: control points " << r.nControl << " (+" << r.nAdded
         << " -" << r.nRemoved << ", guard +" << r.nGuard;
     if (r.nUndone)
     {
-        Info<< ", " << r.nUndone << " trial swap(s) undone";
+        line<< ", " << r.nUndone << " trial swap(s) undone";
     }
-    Info<< (r.rescue ? ", rescue" : "") << "), quality min "
+    line<< (r.rescue ? ", rescue" : "") << "), quality min "
         << r.minQuality << " mean " << r.meanQuality << " (" << r.nCells
         << " cells in reach), relative boundary error " << r.boundaryError
-        << (r.atMaxPoints ? " (at maxPoints)" : "")
-        << ", time swap " << r.swapTime << " select " << r.selectTime
-        << " interpolate " << r.interpolateTime << " guard " << r.guardTime
-        << " points " << r.pointsTime << " s" << endl;
+        << (r.atMaxPoints ? " (at maxPoints)" : "");
+    line.precision(3);
+    line<< ", time [ms] swap " << 1e3*r.swapTime << " select " << 1e3*r.selectTime
+        << " interpolate " << 1e3*r.interpolateTime << " guard " << 1e3*r.guardTime
+        << " points " << 1e3*r.pointsTime;
+    Info<< line.str().c_str() << endl;
 
     if (!Pstream::master())
     {
