@@ -79,8 +79,10 @@ void Foam::dcpRBFMotionSolver::checkPatches() const
                     << " (fixedValue, angularOscillatingDisplacement,"
                     << " solidBodyMotionDisplacement,"
                     << " sixDoFRigidBodyDisplacement, surfaceDisplacement,"
-                    << " codedFixedValue, ...) or list the patch under"
-                    << " staticPatches" << exit(FatalIOError);
+                    << " codedFixedValue, ...); a patch whose points should"
+                    << " slide (slip, fixedNormalSlip) goes in neither list,"
+                    << " one that stays put under staticPatches"
+                    << exit(FatalIOError);
             }
         }
         else if

@@ -146,12 +146,14 @@ TEST_P(UnprescribedMovingPatch, IsRefusedNamingPatchAndType)
         EXPECT_NE(m.find("movingPatches"), std::string::npos) << m;
         EXPECT_NE(m.find("bottom"), std::string::npos) << m;
         EXPECT_NE(m.find(type), std::string::npos) << m;
+        // where a sliding patch goes (not under staticPatches: frozen)
+        EXPECT_NE(m.find("slip, fixedNormalSlip) goes in neither list"), std::string::npos) << m;
     }
 }
 
 INSTANTIATE_TEST_SUITE_P
 (
-    Types, UnprescribedMovingPatch, ::testing::Values("calculated", "zeroGradient")
+    Types, UnprescribedMovingPatch, ::testing::Values("calculated", "zeroGradient", "slip")
 );
 
 
