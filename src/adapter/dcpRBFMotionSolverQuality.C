@@ -234,6 +234,19 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) cons
 {
     if (lastQuality_.nInverted)
     {
+        // what else could help, from what is not set already
+        string hint;
+        if (!rotation_.active())
+        {
+            const bool dynamic =
+                settings_.selection().selection == dcpRBFSelectionSettings::mode::dynamic;
+            hint =
+                string(dynamic ? "" : ", use selection dynamic")
+              + (settings_.qualityFloor() > 0 ? "" : ", set a qualityFloor (e.g. 0.2)")
+              + " or, for large rotations, rotationInterpolation true."
+              + " (A body moved by the flow, e.g. sixDoFRigidBodyDisplacement,"
+                " may itself have moved too far in one step: check its motion.)";
+        }
         WarningInFunction
             << "Time " << mesh().time().timeName() << ": "
             << lastQuality_.nInverted << " inverted or degenerate cells"
@@ -245,11 +258,9 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) cons
                    " static patches is too large for the cells there (check"
                    " each body's centre is its pivot; refine the cells between"
                    " body and walls, or move the walls away)."
-                 : "reduce the motion per step, enlarge supportRadius, use"
-                   " selection dynamic with a qualityFloor, or, for large"
-                   " rotations, rotationInterpolation true."
+                 : "reduce the motion per step, enlarge supportRadius"
                )
-            << endl;
+            << hint.c_str() << endl;
     }
 }
 
