@@ -113,10 +113,17 @@ void Foam::dcpRBFMotionSolver::setThreads() const
     // several times: the cores available to the rank, shared among the
     // node's ranks, unless the user says otherwise (dcpRBFThreads)
     #ifdef _OPENMP
-    const label nThreads = dcpRBFThreads::set();
+    const label nThreads =
+        dcpRBFThreads::set(mesh().nPoints(), settings_.pointsPerThread());
     Info<< typeName << ": " << nThreads << " OpenMP thread(s)"
         << (Pstream::parRun() ? " per processor" : "")
-        << " (set OMP_NUM_THREADS to change)" << endl;
+        << " (" << (
+               settings_.pointsPerThread() > 0
+             ? "one per pointsPerThread " + Foam::name(settings_.pointsPerThread())
+               + " mesh points, up to the cores available"
+             : string("the cores available")
+           ).c_str()
+        << "; set OMP_NUM_THREADS to change)" << endl;
     #endif
 }
 

@@ -9,6 +9,7 @@ License
 #include "dcpRBFSettings.H"
 #include "dcpRBFDictReader.H"
 #include "dcpRBFVersion.H"
+#include "ThreadCount.hpp"
 #include "emptyPolyPatch.H"
 #include "wordRes.H"
 
@@ -66,7 +67,8 @@ const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
         "movingPatches", "staticPatches", "function", "supportRadius",
         "polynomial", "controlPoints", "qualityMetric", "qualityFloor",
         "qualityFloorAction", "guardIterations", "boundaryCorrection",
-        "evaluationMemoryMB", "rotationInterpolation", "rotation"
+        "evaluationMemoryMB", "pointsPerThread", "rotationInterpolation",
+        "rotation"
     });
     return dict;
 }
@@ -270,6 +272,10 @@ Foam::dcpRBFSettings::dcpRBFSettings
     guardIterations_ = r.getLabel("guardIterations", 5, 0, 1000);
     boundaryCorrection_ = r.getSwitch("boundaryCorrection", true);
     evaluationMemoryMB_ = r.getLabel("evaluationMemoryMB", 1024, 0, 1000000);
+    pointsPerThread_ = r.getLabel
+    (
+        "pointsPerThread", label(dcprbf::pointsPerThread), 0, labelMax
+    );
 }
 
 

@@ -54,14 +54,26 @@ Foam::label Foam::dcpRBFThreads::ranksOnNode()
 }
 
 
-Foam::label Foam::dcpRBFThreads::set()
+Foam::label Foam::dcpRBFThreads::set
+(
+    const label nPoints,
+    const label pointsPerThread
+)
 {
     #ifdef _OPENMP
     // collective: every rank takes part, whatever its environment
     const label ranks = ranksOnNode();
     if (getEnv("OMP_NUM_THREADS").empty())
     {
-        omp_set_num_threads(dcprbf::threadsPerRank(coresAvailable(), ranks));
+        omp_set_num_threads
+        (
+            dcprbf::threadsForSize
+            (
+                dcprbf::threadsPerRank(coresAvailable(), ranks),
+                nPoints,
+                pointsPerThread
+            )
+        );
     }
     return omp_get_max_threads();
     #else

@@ -33,3 +33,28 @@ TEST(ThreadCount, RanksShareTheCoresWithoutOversubscribing)
         }
     }
 }
+
+TEST(ThreadCount, SmallMeshesUseOneThread)
+{
+    // short parallel loops stall when other processes share the cores
+    EXPECT_EQ(threadsForSize(2, 26254), 1);
+    EXPECT_EQ(threadsForSize(16, pointsPerThread - 1), 1);
+    EXPECT_EQ(threadsForSize(16, 2*pointsPerThread - 1), 1);
+    EXPECT_EQ(threadsForSize(16, 2*pointsPerThread), 2);
+    EXPECT_EQ(threadsForSize(2, 2351960), 2);      // the fine wing: every core
+    EXPECT_EQ(threadsForSize(16, 2351960), 9);
+    EXPECT_EQ(threadsForSize(1, 10000000), 1);     // never beyond the cores given
+    EXPECT_EQ(threadsForSize(0, 0), 1);
+    EXPECT_EQ(threadsForSize(16, 1000, 0), 16);    // no limit by size
+    EXPECT_EQ(threadsForSize(16, 1000, 100), 10);
+    for (int threads = 1; threads <= 32; ++threads)
+    {
+        for (long n = 0; n < 40*pointsPerThread; n += pointsPerThread/3)
+        {
+            const int t = threadsForSize(threads, n);
+            EXPECT_GE(t, 1);
+            EXPECT_LE(t, threads);
+            EXPECT_LE(long(t - 1)*pointsPerThread, n) << threads << ' ' << n;
+        }
+    }
+}

@@ -79,8 +79,9 @@ test_threads_sameResultOn1And2Threads() {
 }
 
 # Default thread count (OMP_NUM_THREADS unset): a serial run uses the cores
-# it may run on (all of them; 1 under taskset -c 0), ranks share the node's
-# cores (bound or not: ranks x threads <= cores)
+# it may run on (all of them with pointsPerThread 0; 1 under taskset -c 0),
+# ranks share the node's cores (bound or not: ranks x threads <= cores); a
+# mesh smaller than pointsPerThread (default 250000) points uses 1 thread
 test_threads_defaultNeverOversubscribes() {
     local cores n
     cores=$(nproc)
@@ -89,7 +90,11 @@ test_threads_defaultNeverOversubscribes() {
     threadsIn() { sed -n 's/^dcpRBF: \([0-9]*\) OpenMP thread(s).*/\1/p' "$1" | head -n 1; }
     (unset OMP_NUM_THREADS; run moveDynamicMesh) || return 1
     n=$(threadsIn log.moveDynamicMesh)
-    [ "$n" = "$cores" ] || fail "serial: $n threads, $cores cores available" || return 1
+    [ "$n" = 1 ] || fail "serial, $(grep -c . constant/polyMesh/points) lines of points (< 250000 points): $n threads, not 1" || return 1
+    dynamicMeshDict "$(cubeCoeffs "selection greedy;") pointsPerThread 0;"
+    (unset OMP_NUM_THREADS; run moveDynamicMesh) || return 1
+    n=$(threadsIn log.moveDynamicMesh.1)
+    [ "$n" = "$cores" ] || fail "serial, pointsPerThread 0: $n threads, $cores cores available" || return 1
     (unset OMP_NUM_THREADS; run taskset -c 0 moveDynamicMesh) || return 1
     n=$(threadsIn log.taskset)
     [ "$n" = 1 ] || fail "serial on one core (taskset -c 0): $n threads" || return 1
@@ -106,5 +111,5 @@ EOT
     n=$(threadsIn log.mpirun)
     [ -n "$n" ] && [ $((2*n)) -le $((cores > 2 ? cores : 2)) ] \
         || fail "2 unbound ranks on $cores cores: $n threads each" || return 1
-    echo "threads: serial $cores, taskset 1, 2 ranks $n each ($cores cores)"
+    echo "threads: serial 1 (small mesh), $cores (pointsPerThread 0), taskset 1, 2 ranks $n each ($cores cores)"
 }

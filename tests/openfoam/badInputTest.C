@@ -67,6 +67,7 @@ std::vector<badInput> catalogue()
         {"RelativeRadiusUnknownUnit", mv + st + "supportRadius 3 chords;", "movingExtent"},
         {"BoundaryCorrectionNotBool", mv + st + r + "boundaryCorrection sometimes;", "boundaryCorrection"},
         {"NegativeEvaluationMemory", mv + st + r + "evaluationMemoryMB -1;", "evaluationMemoryMB"},
+        {"NegativePointsPerThread", mv + st + r + "pointsPerThread -1;", "pointsPerThread"},
         {"UnknownSwapRule", mv + st + r + "controlPoints { selection dynamic; swapRule best; }", "swapRule"},
         {"SwapRuleWithGreedy", mv + st + r + "controlPoints { selection greedy; swapRule nearest; }", "swapRule"},
         {"BlendStepsWithNearest", mv + st + r + "controlPoints { selection dynamic; swapRule nearest; swapBlendSteps 3; }", "swapBlendSteps"},
