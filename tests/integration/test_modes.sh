@@ -96,6 +96,9 @@ test_qualityFloorStop_fatalErrorWhenUnmet() {
     fi
     grep -q "below qualityFloor 0.99" log.moveDynamicMesh || fail "error does not name qualityFloor"
     grep -q "qualityFloorAction stop" log.moveDynamicMesh || fail "error does not name the action"
+    # selection all: no point can join, the error says what can help
+    grep -q "every boundary point is a control point: more cannot help.*raise supportRadius" log.moveDynamicMesh \
+        || fail "error does not say more points cannot help: $(grep -m1 -A1 'FOAM FATAL' log.moveDynamicMesh | tail -n 1)"
 }
 
 test_qualityGuard_addsPointsInStep() {
