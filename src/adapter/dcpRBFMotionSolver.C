@@ -115,15 +115,24 @@ void Foam::dcpRBFMotionSolver::setThreads() const
     #ifdef _OPENMP
     const label nThreads =
         dcpRBFThreads::set(mesh().nPoints(), settings_.pointsPerThread());
-    Info<< typeName << ": " << nThreads << " OpenMP thread(s)"
-        << (Pstream::parRun() ? " per processor" : "")
+    // ranks may differ (their point counts): the range over them
+    const label nMin = returnReduce(nThreads, minOp<label>());
+    const label nMax = returnReduce(nThreads, maxOp<label>());
+    const bool fromEnv = !getEnv("OMP_NUM_THREADS").empty();
+    Info<< typeName << ": "
+        << (
+               nMin == nMax ? Foam::name(nMin)
+             : Foam::name(nMin) + "-" + Foam::name(nMax)
+           ).c_str()
+        << " OpenMP thread(s)" << (Pstream::parRun() ? " per processor" : "")
         << " (" << (
-               settings_.pointsPerThread() > 0
+               fromEnv ? string("OMP_NUM_THREADS")
+             : settings_.pointsPerThread() > 0
              ? "one per pointsPerThread " + Foam::name(settings_.pointsPerThread())
                + " mesh points, up to the cores available"
              : string("the cores available")
            ).c_str()
-        << "; set OMP_NUM_THREADS to change)" << endl;
+        << (fromEnv ? ")" : "; set OMP_NUM_THREADS to change)") << endl;
     #endif
 }
 

@@ -196,15 +196,32 @@ void Foam::dcpRBFMotionSolver::guardQuality
             const word t(mesh().time().timeName());
             const label maxN = settings_.selection().maxPoints;
             const label nCandidates = controlPoints_.candidates().rows();
+            const string full
+            (
+                string
+                (
+                    " (every boundary point is a control point: more cannot"
+                    " help. The interpolation is exact at the boundary, so the"
+                    " cells are squashed between the moving and the static"
+                    " patches"
+                )
+              + (
+                    settings_.kernel().compact()
+                  ? " by the displacement's decay within supportRadius (about"
+                    " 2 times the displacement over it for WendlandC2): raise"
+                    " supportRadius"
+                  : ": try another supportRadius or function"
+                )
+              + (
+                    rotation_.active()
+                  ? ")"
+                  : "; for large rotations rotationInterpolation true)"
+                )
+            );
             const string why
             (
                 controlPoints_.size() >= nCandidates
-              ? " (every boundary point is a control point: more cannot help."
-                " The interpolation is exact at the boundary, so the cells are"
-                " squashed by the displacement's decay within supportRadius"
-                " (about 2 times the displacement over it for WendlandC2):"
-                " raise supportRadius; for large rotations"
-                " rotationInterpolation true)"
+              ? std::string(full)
               : controlPoints_.size() >= maxN
               ? " (the set is at maxPoints " + Foam::name(maxN)
                 + ": no point can join; raise maxPoints)"

@@ -13,7 +13,7 @@ Description
 #include "dcpRBFRotation.H"
 #include "pointFields.H"
 #include "clockTime.H"
-#include "OStringStream.H"
+#include "StringStream.H"
 
 #include <cmath>
 

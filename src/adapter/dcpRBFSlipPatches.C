@@ -8,9 +8,11 @@ License
 
 #include "dcpRBFSlipPatches.H"
 #include "slipPointPatchField.H"
+#include "fixedNormalSlipPointPatchField.H"
 #include "symmetryPointPatchField.H"
 #include "facePointPatch.H"
 #include "primitivePatch.H"
+#include "PatchTools.H"
 #include "transformField.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -28,8 +30,13 @@ Foam::dcpRBFSlipPatches::dcpRBFSlipPatches
     forAll(displacement.boundaryField(), patchi)
     {
         const pointPatchVectorField& pf = displacement.boundaryField()[patchi];
+        // slip and symmetry; not fixedNormalSlip (derived from slip: its
+        // own normal), nor symmetryPlane (not derived from symmetry)
         const bool slip =
-            isA<slipPointPatchField<vector>>(pf)
+            (
+                isA<slipPointPatchField<vector>>(pf)
+             && !isA<fixedNormalSlipPointPatchField<vector>>(pf)
+            )
          || isA<symmetryPointPatchField<vector>>(pf);
         if (!slip || !isA<facePointPatch>(pf.patch()))
         {
@@ -50,7 +57,10 @@ Foam::dcpRBFSlipPatches::dcpRBFSlipPatches
                 << " differ from the patch's" << abort(FatalError);
         }
         slip_[patchi] = true;
-        normals0_[patchi] = pp0.pointNormals();
+        // averaged over the faces of every processor holding the point (the
+        // same normal on each; collective: every rank has the same
+        // non-processor patches in the same order)
+        normals0_[patchi] = PatchTools::pointNormals(mesh, pp0);
     }
 }
 

@@ -9,7 +9,12 @@ License
 #include "dcpRBFStepLog.H"
 #include "OSspecific.H"
 #include "Pstream.H"
-#include "OStringStream.H"
+#include "StringStream.H"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -17,6 +22,34 @@ Foam::dcpRBFStepLog::dcpRBFStepLog(const Time& runTime)
 :
     time_(runTime)
 {}
+
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A time in s as ms to 3 significant digits, never in exponent form
+//  (1020 ms as 1020, 0.00383 ms as 0.00383)
+std::string ms(const double seconds)
+{
+    const double t = 1e3*seconds;
+    char buf[64];
+    if (t >= 1)
+    {
+        const int decimals = std::max(0, 2 - int(std::floor(std::log10(t))));
+        std::snprintf(buf, sizeof(buf), "%.*f", decimals, t);
+    }
+    else
+    {
+        // below 1 ms: 3 significant digits after the leading zeros
+        const int decimals = t > 0 ? std::min(12, 2 - int(std::floor(std::log10(t)))) : 0;
+        std::snprintf(buf, sizeof(buf), "%.*f", decimals, t);
+    }
+    return buf;
+}
+
+} // namespace
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -37,10 +70,11 @@ void Foam::dcpRBFStepLog::write(const record& r)
         << r.minQuality << " mean " << r.meanQuality << " (" << r.nCells
         << " cells in reach), relative boundary error " << r.boundaryError
         << (r.atMaxPoints ? " (at maxPoints)" : "");
-    line.precision(3);
-    line<< ", time [ms] swap " << 1e3*r.swapTime << " select " << 1e3*r.selectTime
-        << " interpolate " << 1e3*r.interpolateTime << " guard " << 1e3*r.guardTime
-        << " points " << 1e3*r.pointsTime;
+    line<< ", time [ms] swap " << ms(r.swapTime).c_str()
+        << " select " << ms(r.selectTime).c_str()
+        << " interpolate " << ms(r.interpolateTime).c_str()
+        << " guard " << ms(r.guardTime).c_str()
+        << " points " << ms(r.pointsTime).c_str();
     Info<< line.str().c_str() << endl;
 
     if (!Pstream::master())
@@ -56,6 +90,7 @@ void Foam::dcpRBFStepLog::write(const record& r)
         );
         mkDir(dir);
         file_.reset(new OFstream(dir/"dcpRBF.dat"));
+        file_().precision(17);     // full precision, whatever writePrecision
         file_()
             << "# dcpRBF motion solver, one row per step" << nl
             << "# time nControl nAdded nRemoved nGuard nCells minQuality"

@@ -16,7 +16,7 @@ motionRun() {
 # restartEqualsUninterrupted [NP]: written at t = 0.5 and 1 only (points at
 # full precision), so the uninterrupted run carries updated factorizations
 # between writes; run to t = 1 here; in restart/, run to 0.5, restart from
-# 0.5 to 1; the points at 1 agree bit for bit (1e-14 of the domain size).
+# 0.5 to 1; the points at 1 agree to round-off (1e-14 of the domain size).
 # NP = 2: both runs on 2 processors (simple decomposition), reconstructed
 restartEqualsUninterrupted() {
     local np="${1:-1}"

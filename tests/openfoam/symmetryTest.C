@@ -57,6 +57,51 @@ TEST(Symmetry, SymmetryPlanePointsStayInTheirPlane)
     }
 }
 
+// The top wall's condition, in neither list: slip removes the displacement
+// along the wall's normal (y), fixedNormalSlip along its own n (here x, not
+// the wall's normal): each keeps its own meaning
+TEST(Slip, SlipAndFixedNormalSlipRemoveTheirOwnNormal)
+{
+    struct variant { const char* condition; direction removed; };
+    for (const variant v : {variant{"slip", vector::Y}, variant{"fixedNormalSlip; n (1 0 0)", vector::X}})
+    {
+        testCase c(2, 8, "movingPatches (bottom); staticPatches (left right); supportRadius 2;");
+        c.write
+        (
+            "0/pointDisplacement", "pointVectorField",
+            std::string("dimensions [0 1 0 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+            "boundaryField\n{\n"
+            "    \"(left|right)\" { type fixedValue; value uniform (0 0 0); }\n"
+            "    bottom { type fixedValue; value uniform (0 0 0); }\n"
+            "    top { type ") + v.condition + "; }\n"
+            "    \"(front|back)\" { type empty; }\n}\n"
+        );
+        autoPtr<motionSolver> ms(select(c));
+        auto& solver = refCast<dcpRBFMotionSolver>(ms());
+        prescribe
+        (
+            solver.pointDisplacement(), "bottom",
+            [](const point& x)
+            {
+                const scalar s = std::sin(constant::mathematical::pi*x.x());
+                return vector(0.05*s, 0.1*s, 0);
+            }
+        );
+        const pointField p0(solver.points0());
+        const pointField p(ms->newPoints());
+        const polyBoundaryMesh& bm = c.mesh().boundaryMesh();
+        scalar removed = 0, kept = 0;
+        for (const label i : bm[bm.findPatchID("top")].meshPoints())
+        {
+            const vector d(p[i] - p0[i]);
+            removed = max(removed, mag(d[v.removed]));
+            kept = max(kept, mag(d[v.removed == vector::X ? vector::Y : vector::X]));
+        }
+        EXPECT_LT(removed, 1e-14) << v.condition;
+        EXPECT_GT(kept, 1e-4) << v.condition << ": nothing moved along the other direction";
+    }
+}
+
 } // namespace
 
 // ************************************************************************* //
