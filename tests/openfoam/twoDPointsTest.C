@@ -85,4 +85,32 @@ TEST(TwoDPoints, SameValuesAsOpenFOAMsCorrection)
     }
 }
 
+// A 2D mesh whose empty direction is x (the box's coordinates turned
+// (x y z) -> (z x y), a rotation): the same values as OpenFOAM's too
+TEST(TwoDPoints, SameValuesWhenTheEmptyDirectionIsX)
+{
+    testCase c(2, 7, "movingPatches (bottom); staticPatches (top left right);");
+    pointField turned(c.mesh().points());
+    for (point& x : turned)
+    {
+        x = point(x.z(), x.x(), x.y());
+    }
+    c.mesh().movePoints(turned);
+    ASSERT_EQ(c.mesh().geometricD().x(), -1);
+    const dcpRBFTwoDPoints ours(c.mesh());
+    ASSERT_TRUE(ours.required());
+    const pointField p0(perturbed(c.mesh(), 0.05, 4));
+    pointField a(p0), b(p0);
+    ours.correct(a);
+    twoDPointCorrector::New(c.mesh()).correctPoints(b);
+    EXPECT_EQ(std::memcmp(a.cdata(), b.cdata(), a.size()*sizeof(point)), 0);
+    // twins share their in-plane (y, z) position
+    label nChanged = 0;
+    forAll(a, i)
+    {
+        nChanged += mag(a[i] - p0[i]) > 1e-6;
+    }
+    EXPECT_EQ(nChanged, a.size());
+}
+
 } // namespace
