@@ -87,3 +87,12 @@ test_movingConePlanar_slipFarFieldStaysFlat() {
         farField.labels constant/polyMesh/points 0.0005/polyMesh/points \
         || fail "the slip far field left its plane" || return 1
 }
+
+# The same on 2 processors, the far field cut between them (simple 2 1 1
+# splits in x through farFieldMoving): the slip normals and the motion as
+# in serial
+test_movingConePlanar_parallelEqualsSerial() {
+    movingConePlanarCase || return 1
+    foamDictionary system/controlDict -entry endTime -set 0.00025 > /dev/null
+    parallelEqualsSerial 0.00025
+}
