@@ -226,7 +226,9 @@ void Foam::dcpRBFMotionSolver::guardQuality
               ? " (the set is at maxPoints " + Foam::name(maxN)
                 + ": no point can join; raise maxPoints)"
               : iter >= settings_.guardIterations()
-              ? " (guardIterations " + Foam::name(settings_.guardIterations()) + ")"
+              ? " (guardIterations " + Foam::name(settings_.guardIterations())
+                + "; where more points do not raise the minimum, raise"
+                  " supportRadius)"
               : ""
             );
             if (settings_.onFloorFailure() == dcpRBFSettings::floorAction::stop)

@@ -111,6 +111,19 @@ test_qualityGuard_addsPointsInStep() {
     meshOkAtEveryTime
 }
 
+# The guard stopped by guardIterations: the error names it and what else to
+# raise when more points do not help
+test_qualityFloorStop_atGuardIterationsNamesIt() {
+    modeRun3D "selection greedy; tolerance 1e-2;" || return 1
+    dynamicMeshDict "$(cubeCoeffs "selection greedy; tolerance 1e-2;") qualityFloor 0.999; qualityFloorAction stop; guardIterations 1;"
+    if moveDynamicMesh > log.moveDynamicMesh 2>&1
+    then
+        fail "moveDynamicMesh went on below the quality floor"
+    fi
+    grep -q "after 1 guard additions (guardIterations 1; where more points do not raise the minimum, raise supportRadius)" \
+        log.moveDynamicMesh || fail "error does not name guardIterations and supportRadius: $(grep -m1 -A1 'FOAM FATAL' log.moveDynamicMesh | tail -n 1)"
+}
+
 test_dcpRBFFvMesh_writesCellQuality() {
     modeRun3D "selection dynamic;" || return 1
     sed -i 's/^dynamicFvMesh .*/dynamicFvMesh dcpRBFFvMesh;\ndynamicFvMeshLibs ("libdcpRBF.so");/' constant/dynamicMeshDict
