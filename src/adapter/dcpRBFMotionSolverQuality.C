@@ -194,43 +194,7 @@ void Foam::dcpRBFMotionSolver::guardQuality
         )
         {
             const word t(mesh().time().timeName());
-            const label maxN = settings_.selection().maxPoints;
-            const label nCandidates = controlPoints_.candidates().rows();
-            const string full
-            (
-                string
-                (
-                    " (every boundary point is a control point: more cannot"
-                    " help. The interpolation is exact at the boundary, so the"
-                    " cells are squashed between the moving and the static"
-                    " patches"
-                )
-              + (
-                    settings_.kernel().compact()
-                  ? " by the displacement's decay within supportRadius (about"
-                    " 2 times the displacement over it for WendlandC2): raise"
-                    " supportRadius"
-                  : ": try another supportRadius or function"
-                )
-              + (
-                    rotation_.active()
-                  ? ")"
-                  : "; for large rotations rotationInterpolation true)"
-                )
-            );
-            const string why
-            (
-                controlPoints_.size() >= nCandidates
-              ? std::string(full)
-              : controlPoints_.size() >= maxN
-              ? " (the set is at maxPoints " + Foam::name(maxN)
-                + ": no point can join; raise maxPoints)"
-              : iter >= settings_.guardIterations()
-              ? " (guardIterations " + Foam::name(settings_.guardIterations())
-                + "; where more points do not raise the minimum, raise"
-                  " supportRadius)"
-              : ""
-            );
+            const string why(guardShortfall(iter));
             if (settings_.onFloorFailure() == dcpRBFSettings::floorAction::stop)
             {
                 FatalErrorInFunction
@@ -257,41 +221,6 @@ void Foam::dcpRBFMotionSolver::guardQuality
 }
 
 
-void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) const
-{
-    if (lastQuality_.nInverted)
-    {
-        // what else could help, from what is not set already
-        string hint;
-        if (!rotation_.active())
-        {
-            const bool dynamic =
-                settings_.selection().selection == dcpRBFSelectionSettings::mode::dynamic;
-            hint =
-                string(dynamic ? "" : ", use selection dynamic")
-              + (settings_.qualityFloor() > 0 ? "" : ", set a qualityFloor (e.g. 0.2)")
-              + " or, for large rotations, rotationInterpolation true."
-              + " (A body moved by the flow, e.g. sixDoFRigidBodyDisplacement,"
-                " may itself have moved too far in one step: check its motion.)";
-        }
-        WarningInFunction
-            << "Time " << mesh().time().timeName() << ": "
-            << lastQuality_.nInverted << " inverted or degenerate cells"
-            << " (quality <= 0, minimum " << r.minQuality << "). The mesh is"
-            << " invalid: "
-            << (
-                   rotation_.active()
-                 ? "rotationInterpolation: the twist between the bodies and the"
-                   " static patches is too large for the cells there (check"
-                   " each body's centre is its pivot; refine the cells between"
-                   " body and walls, or move the walls away)."
-                 : "reduce the motion per step, enlarge supportRadius"
-               )
-            << hint.c_str() << endl;
-    }
-}
-
-
 const Foam::dcpRBFQualityRegion::summary&
 Foam::dcpRBFMotionSolver::currentQuality()
 {
@@ -309,5 +238,6 @@ Foam::dcpRBFMotionSolver::currentQuality()
     }
     return lastQuality_;
 }
+
 
 // ************************************************************************* //
