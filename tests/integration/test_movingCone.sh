@@ -96,3 +96,26 @@ test_movingConePlanar_parallelEqualsSerial() {
     foamDictionary system/controlDict -entry endTime -set 0.00025 > /dev/null
     parallelEqualsSerial 0.00025
 }
+
+# The cone pushed 3 times as fast: cells invert. The warning suggests what
+# is not set already: selection dynamic and a qualityFloor for greedy; only
+# the floor for dynamic
+test_movingConePlanar_invertedWarningSuggestsWhatIsNotSet() {
+    local sel
+    movingConePlanarCase || return 1
+    sed -i 's/(1 (1 0 0))/(1 (3 0 0))/' 0/pointDisplacement
+    foamDictionary system/controlDict -entry endTime -set 0.0009 > /dev/null
+    for sel in greedy dynamic
+    do
+        dynamicMeshDict "movingPatches (movingWall); staticPatches (fixedWall left);
+        supportRadius 0.01; controlPoints { selection $sel; }"
+        rm -rf 0.0* postProcessing
+        run moveDynamicMesh || return 1
+        grep -A2 "inverted or degenerate" log.moveDynamicMesh* | tr '\n' ' ' > warning.$sel
+        [ -s warning.$sel ] || fail "$sel: no inverted cells (the test needs them)" || return 1
+        grep -q "set a qualityFloor" warning.$sel || fail "$sel: no qualityFloor advice: $(head -c 400 warning.$sel)" || return 1
+        rm -f log.moveDynamicMesh*
+    done
+    grep -q "use selection dynamic" warning.greedy || fail "greedy: selection dynamic not suggested" || return 1
+    ! grep -q "use selection dynamic" warning.dynamic || fail "dynamic: selection dynamic suggested although set" || return 1
+}
