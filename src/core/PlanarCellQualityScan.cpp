@@ -69,22 +69,25 @@ PlanarCellQualityScan::PlanarCellQualityScan
     {
         return points0[3*std::size_t(pointIds_[std::size_t(k)]) + (d ? axis1_ : axis0_)];
     };
-    const auto addMap = [&](const double* ea, const double* eb)
+    // The inverse of (ea, eb) into inv (row major), or degenerate
+    const auto inverse = [](const double* ea, const double* eb, double* inv)
     {
         const double det0 = ea[0]*eb[1] - ea[1]*eb[0];
         const double scale2 = std::max(ea[0]*ea[0] + ea[1]*ea[1], eb[0]*eb[0] + eb[1]*eb[1]);
         if (det0*det0 > 1e-28*scale2*scale2)
         {
-            inverse0_.insert(inverse0_.end(), {eb[1]/det0, -eb[0]/det0, -ea[1]/det0, ea[0]/det0});
-            degenerate_.push_back(0);
+            inv[0] = eb[1]/det0;
+            inv[1] = -eb[0]/det0;
+            inv[2] = -ea[1]/det0;
+            inv[3] = ea[0]/det0;
+            return false;
         }
-        else
-        {
-            inverse0_.insert(inverse0_.end(), {0, 0, 0, 0});
-            degenerate_.push_back(1);   // quality 1 (TetQuality's convention)
-        }
+        std::fill(inv, inv + 4, 0.0);
+        return true;   // quality 1 (TetQuality's convention)
     };
     mapStart_.assign(1, 0);
+    double inv[16], one[4];
+    bool degenerate[4];
     for (std::size_t i = 0; i < size(); ++i)
     {
         const std::size_t j0 = polygonStart_[i], j1 = polygonStart_[i + 1];
@@ -93,7 +96,9 @@ PlanarCellQualityScan::PlanarCellQualityScan
             const int a = polygonPoints_[j0], b = polygonPoints_[j0 + 1], c = polygonPoints_[j0 + 2];
             const double ea[2] = {at(b, 0) - at(a, 0), at(b, 1) - at(a, 1)};
             const double eb[2] = {at(c, 0) - at(a, 0), at(c, 1) - at(a, 1)};
-            addMap(ea, eb);
+            degenerate_.push_back(inverse(ea, eb, one));
+            inverse0_.insert(inverse0_.end(), one, one + 4);
+            otherCells_.push_back(i);
             mapStart_.push_back(degenerate_.size());
             continue;
         }
@@ -108,23 +113,43 @@ PlanarCellQualityScan::PlanarCellQualityScan
             const int a = polygonPoints_[j], b = polygonPoints_[j + 1 < j1 ? j + 1 : j0];
             const double ea[2] = {at(a, 0) - c0[0], at(a, 1) - c0[1]};
             const double eb[2] = {at(b, 0) - c0[0], at(b, 1) - c0[1]};
-            addMap(ea, eb);
+            const bool flat = inverse(ea, eb, one);
+            if (j1 - j0 == 4)
+            {
+                degenerate[j - j0] = flat;
+                std::copy(one, one + 4, inv + 4*(j - j0));
+            }
+            else
+            {
+                degenerate_.push_back(flat);
+                inverse0_.insert(inverse0_.end(), one, one + 4);
+            }
         }
-        mapStart_.push_back(degenerate_.size());
+        if (j1 - j0 == 4)
+        {
+            quads_.add(i, &polygonPoints_[j0], inv, degenerate);
+        }
+        else
+        {
+            otherCells_.push_back(i);
+            mapStart_.push_back(degenerate_.size());
+        }
     }
+    quads_.finishAdding();
 }
 
 
 void PlanarCellQualityScan::addMaps
 (
-    const std::size_t i,
+    const std::size_t k,
     const double* x,
     PlanarMapBatch& batch,
     std::size_t t
 ) const
 {
+    const std::size_t i = otherCells_[k];
     const std::size_t j0 = polygonStart_[i], j1 = polygonStart_[i + 1];
-    std::size_t m = mapStart_[i];
+    std::size_t m = mapStart_[k];
     if (j1 - j0 == 3)
     {
         const int a = polygonPoints_[j0], b = polygonPoints_[j0 + 1], c = polygonPoints_[j0 + 2];
@@ -166,7 +191,6 @@ void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide)
         compact_.reset(new double[2*pointIds_.size()]);
     }
     double* const x = compact_.get();
-    const long n = long(size());
     #pragma omp parallel
     {
         #pragma omp for schedule(static)
@@ -175,31 +199,35 @@ void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide)
             x[2*i] = p[3*std::size_t(pointIds_[i]) + axis0_];
             x[2*i + 1] = p[3*std::size_t(pointIds_[i]) + axis1_];
         }
-        // Per block of cells: the maps into a PlanarMapBatch (SIMD), each
-        // cell's worst, the ranked worst's qualities in SIMD lanes
+        // The quadrilaterals (PlanarQuadBatch: one cell per SIMD lane);
+        // per block of the other cells: the maps into a PlanarMapBatch
+        // (SIMD), each cell's worst, the ranked worst's qualities in SIMD
+        // lanes
+        quads_.measure(x, q, metric_, wide);
         PlanarMapBatch maps;
         WorstBatch finals(metric_, wide);
         constexpr long blockCells = 64;
+        const long n = long(otherCells_.size());
         #pragma omp for schedule(static, 4)
         for (long b = 0; b < (n + blockCells - 1)/blockCells; ++b)
         {
-            const std::size_t i0 = std::size_t(b*blockCells);
-            const std::size_t i1 = std::size_t(std::min(n, (b + 1)*blockCells));
-            const std::size_t m0 = mapStart_[i0];
-            maps.resize(mapStart_[i1] - m0);
-            for (std::size_t i = i0; i < i1; ++i)
+            const std::size_t k0 = std::size_t(b*blockCells);
+            const std::size_t k1 = std::size_t(std::min(n, (b + 1)*blockCells));
+            const std::size_t m0 = mapStart_[k0];
+            maps.resize(mapStart_[k1] - m0);
+            for (std::size_t k = k0; k < k1; ++k)
             {
-                addMaps(i, x, maps, mapStart_[i] - m0);
+                addMaps(k, x, maps, mapStart_[k] - m0);
             }
             maps.measure(metric_, wide);
-            for (std::size_t i = i0; i < i1; ++i)
+            for (std::size_t k = k0; k < k1; ++k)
             {
                 TetMeasures::Worst worst(metric_);
-                for (std::size_t t = mapStart_[i] - m0; t < mapStart_[i + 1] - m0; ++t)
+                for (std::size_t t = mapStart_[k] - m0; t < mapStart_[k + 1] - m0; ++t)
                 {
                     worst.add(maps.J(t), maps.a2(t), maps.key(t));
                 }
-                finals.add(worst, q + i);
+                finals.add(worst, q + otherCells_[k]);
             }
             finals.finish();
         }

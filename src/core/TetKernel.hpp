@@ -7,8 +7,11 @@
 // select in a lane whose result is then discarded.
 //
 // Include only in the kernels' .cpp files: on x86-64 with GCC it switches
-// off, for the rest of the file, -fmath-errno (sqrt vectorizes; errno is
-// never read), contraction (-ffp-contract=off: no FMA on any target, so
+// off, for the rest of the file, -fmath-errno (errno is never read; but GCC
+// 12 keeps errno for std::sqrt inlined from <cmath> under the pragma: the
+// sizeShape kernels vectorize only when the file is compiled with
+// -fno-math-errno, as src/Make/options and dcprbfCore.cmake do; a warning
+// below says when not), contraction (-ffp-contract=off: no FMA on any target, so
 // every build gives the same bits) and -ftrapping-math (GCC vectorizes a
 // select of floating-point values only when told that the operations do
 // not trap: dispatch() masks the exceptions meanwhile). No other effect: no
@@ -33,6 +36,9 @@
     #include <xmmintrin.h>
     #pragma GCC optimize("no-trapping-math", "no-math-errno", "fp-contract=off")
     #define DCPRBF_AVX2 1
+    #ifndef __NO_MATH_ERRNO__
+        #warning "dcpRBF: compile with -fno-math-errno: else the sizeShape quality kernels are scalar"
+    #endif
 #else
     #define DCPRBF_AVX2 0
 #endif

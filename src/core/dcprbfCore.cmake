@@ -42,3 +42,7 @@ target_link_libraries(dcprbfCore PUBLIC Eigen3::Eigen OpenMP::OpenMP_CXX)
 # pick other points on 1 and on 2 threads. The core threads its loops itself
 # (OpenMP, per point: the same result whatever the thread count).
 target_compile_definitions(dcprbfCore PUBLIC EIGEN_DONT_PARALLELIZE)
+# No errno from sqrt: the SIMD quality kernels' sqrt vectorizes (GCC 12 keeps
+# errno for std::sqrt under TetKernel.hpp's optimize pragma); the values are
+# the same (src/Make/options: the same for wmake)
+target_compile_options(dcprbfCore PRIVATE -fno-math-errno)

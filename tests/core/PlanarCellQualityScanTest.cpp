@@ -10,6 +10,8 @@
 
 #include <omp.h>
 
+#include <Eigen/Core>
+
 #include <random>
 
 using namespace dcprbf;
@@ -147,7 +149,8 @@ TEST(PlanarCellQualityScan, EqualsTheDecompositionOfThePrismsIncludingInverted)
 
 TEST(PlanarCellQualityScan, RigidMotionIsOneAndThreadsAreBitIdentical)
 {
-    const Extrusion e(10, 0, 1, 0.1);
+    // 900 cells: the quadrilaterals in several chunks of PlanarQuadBatch
+    const Extrusion e(30, 0, 1, 0.1);
     std::vector<double> p(e.points);
     const double c = std::cos(0.7), s = std::sin(0.7);
     for (std::size_t i = 0; i < p.size()/3; ++i)
@@ -187,6 +190,81 @@ TEST(PlanarCellQualityScan, SimdBuildsBitIdentical)
     scan.measure(d.data(), wide.data(), true);
     scan.measure(d.data(), narrow.data(), false);
     EXPECT_EQ(wide, narrow);
+}
+
+
+TEST(PlanarCellQualityScan, QuadrilateralsOfEveryKindEqualTheirTrianglesQualities)
+{
+    // 400 separate quadrilaterals (several of PlanarQuadBatch's chunks),
+    // each with its own points, moved each by its own map: a shear, a
+    // scaling by 1e16 or 1e-16 (J beyond the rank key's range: the scalar
+    // path), a reflection (inverted), one point pushed across the centre
+    // (some triangles inverted), a flat reference (quality 1; the points
+    // overlap: the cells are separate); the value:
+    // the least TetQuality of the four triangles (vertex average, edge)
+    const int n = 400;
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> u(-0.2, 0.2);
+    std::vector<double> p0(12*n), p(12*n);
+    std::vector<std::size_t> start{0};
+    std::vector<int> polygon;
+    for (int c = 0; c < n; ++c)
+    {
+        const double corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        const int kind = c % 6;
+        for (int k = 0; k < 4; ++k)
+        {
+            double* r = &p0[3*(4*c + k)];
+            r[0] = corner[k][0] + u(gen);
+            r[1] = kind == 5 ? 0.5*r[0] : corner[k][1] + u(gen);   // flat
+            r[2] = 0;
+            const double x = r[0], y = r[1];
+            const double scale = kind == 1 ? 1e16 : kind == 2 ? 1e-16 : 1.0;
+            double* m = &p[3*(4*c + k)];
+            m[0] = scale*(kind == 3 ? -x : x + 0.3*y);
+            m[1] = scale*y + (kind == 4 && k == 0 ? 2.0 : 0.0);
+            m[2] = 0;
+            polygon.push_back(4*c + k);
+        }
+        start.push_back(polygon.size());
+    }
+    for (const auto metric : {TetQuality::Metric::sizeShape, TetQuality::Metric::size,
+                              TetQuality::Metric::shape})
+    {
+        const PlanarCellQualityScan scan(start, polygon, p0.data(), 0, 1, metric);
+        std::vector<double> q(n);
+        scan.measure(p.data(), q.data());
+        int nTiny = 0, nInverted = 0, nOne = 0;
+        for (int c = 0; c < n; ++c)
+        {
+            // (A = diag(F, 1): the edges (a - centre, b - centre, unit z))
+            const auto edges = [&](const std::vector<double>& x, const int j)
+            {
+                Eigen::Matrix3d E = Eigen::Matrix3d::Identity();
+                for (int d = 0; d < 2; ++d)
+                {
+                    double centre = 0;
+                    for (int k = 0; k < 4; ++k) centre += x[3*(4*c + k) + d]/4;
+                    E(d, 0) = x[3*(4*c + j) + d] - centre;
+                    E(d, 1) = x[3*(4*c + (j + 1) % 4) + d] - centre;
+                }
+                return E;
+            };
+            double expected = 1e308;
+            for (int j = 0; j < 4; ++j)
+            {
+                expected =
+                    std::min(expected, TetQuality::compute(edges(p0, j), edges(p, j), metric));
+            }
+            EXPECT_NEAR(q[c], expected, 1e-12*std::abs(expected)) << c;
+            nTiny += (expected > 0 && expected < 1e-8);
+            nInverted += (expected <= 0);
+            nOne += (expected == 1);
+        }
+        EXPECT_GT(nTiny, 100);
+        EXPECT_GT(nInverted, 100);
+        EXPECT_GT(nOne, 50);
+    }
 }
 
 

@@ -1,0 +1,208 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+#include "PlanarQuadBatch.hpp"
+
+#include "TetKernel.hpp"
+#include "TetMeasures.hpp"
+
+#include <algorithm>
+
+namespace dcprbf
+{
+
+namespace
+{
+
+//- Quadrilaterals per chunk: a chunk's lanes stay in the L1 cache
+constexpr std::size_t chunkSize = 128;
+
+//- In: the four current points (x y each); out: the quality, the number
+//  of maps beyond the key's range, J and |A|^2 of each map
+constexpr int nIn = 8, nOut = 10;
+
+//- What TetMeasures::Worst keeps, as lane values (selects only)
+struct Worst
+{
+    double J = 1, a2 = 3, key = 1e308, other = 1e308, beyond = 0;
+};
+
+
+//- Map j: current edges fa, fb; its reference (inverse, flag) from r,
+//  components ss apart; J and |A|^2 into o (so apart)
+template<int M>
+DCPRBF_ALWAYS_INLINE void addMap
+(
+    Worst& w,
+    const int j,
+    const double fa0, const double fa1,
+    const double fb0, const double fb1,
+    const double* __restrict r,
+    const std::size_t ss,
+    double* __restrict o,
+    const std::size_t so
+)
+{
+    // PlanarMapBatch's operations
+    const double i00 = r[(4*j)*ss], i01 = r[(4*j + 1)*ss];
+    const double i10 = r[(4*j + 2)*ss], i11 = r[(4*j + 3)*ss];
+    const double f00 = fa0*i00 + fb0*i10, f01 = fa0*i01 + fb0*i11;
+    const double f10 = fa1*i00 + fb1*i10, f11 = fa1*i01 + fb1*i11;
+    const double Jf = f00*f11 - f01*f10;
+    const double a2f = f00*f00 + f01*f01 + f10*f10 + f11*f11 + 1;
+    const bool degenerate = r[(16 + j)*ss] > 0;
+    const double J = degenerate ? -1.0 : Jf;
+    const double a2 = degenerate ? -1.0 : a2f;
+    const double k = tetKernel::key<M>(J, a2);
+    o[(2 + 2*j)*so] = J;
+    o[(3 + 2*j)*so] = a2;
+
+    // TetMeasures::Worst::add: ranked (key in (1e-250, 1e250); keys are
+    // <= 1 here, |A|^2 >= 2 |J| + 1), the first of equal keys kept
+    const double kk = k > 1e-250 ? k : 1e308;
+    const double key0 = w.key;
+    w.J = kk < key0 ? J : w.J;
+    w.a2 = kk < key0 ? a2 : w.a2;
+    w.key = kk < key0 ? kk : key0;
+
+    // inverted (quality J) or degenerate reference (quality 1)
+    double q = J > 0 ? 1e308 : J;
+    q = a2 < 0 ? 1.0 : q;
+    w.other = q < w.other ? q : w.other;
+
+    // positive J beyond the key's range: the scalar path's
+    w.beyond += (J > 0 ? 1.0 : 0.0) - (k > 1e-250 ? 1.0 : 0.0);
+}
+
+
+struct QuadKernel
+{
+template<int M>
+static DCPRBF_ALWAYS_INLINE void run
+(
+    const std::size_t n,
+    const double* __restrict x,
+    const std::size_t sx,
+    const double* __restrict r,
+    const std::size_t ss,
+    double* __restrict out
+)
+{
+    #pragma omp simd
+    for (std::size_t t = 0; t < n; ++t)
+    {
+        const double* p = x + t;
+        const double x0 = p[0], y0 = p[sx], x1 = p[2*sx], y1 = p[3*sx];
+        const double x2 = p[4*sx], y2 = p[5*sx], x3 = p[6*sx], y3 = p[7*sx];
+        // the vertex average as PlanarCellQualityScan sums it
+        const double cx = (((0.0 + x0) + x1) + x2) + x3;
+        const double cy = (((0.0 + y0) + y1) + y2) + y3;
+        const double c0 = cx/4.0, c1 = cy/4.0;
+        const double ax = x0 - c0, ay = y0 - c1, bx = x1 - c0, by = y1 - c1;
+        const double dx = x2 - c0, dy = y2 - c1, ex = x3 - c0, ey = y3 - c1;
+        Worst w;
+        addMap<M>(w, 0, ax, ay, bx, by, r + t, ss, out + t, sx);
+        addMap<M>(w, 1, bx, by, dx, dy, r + t, ss, out + t, sx);
+        addMap<M>(w, 2, dx, dy, ex, ey, r + t, ss, out + t, sx);
+        addMap<M>(w, 3, ex, ey, ax, ay, r + t, ss, out + t, sx);
+
+        // WorstBatch: the ranked worst's quality, the least with the others
+        const double qr = tetKernel::quality<M>(w.J, w.a2);
+        const double qm = qr < w.other ? qr : w.other;
+        out[t] = w.key < 1e308 ? qm : w.other;
+        out[sx + t] = w.beyond;
+    }
+}
+};
+
+} // namespace
+
+
+void PlanarQuadBatch::add
+(
+    const std::size_t cell,
+    const int points[4],
+    const double inverse[16],
+    const bool degenerate[4]
+)
+{
+    cells_.push_back(cell);
+    points_.insert(points_.end(), points, points + 4);
+    reference_.insert(reference_.end(), inverse, inverse + 16);
+    for (int j = 0; j < 4; ++j) reference_.push_back(degenerate[j] ? 1.0 : 0.0);
+}
+
+
+void PlanarQuadBatch::finishAdding()
+{
+    const std::size_t n = size();
+    stride_ = n;
+    std::vector<double> lanes(20*n);
+    for (std::size_t t = 0; t < n; ++t)
+    {
+        for (std::size_t k = 0; k < 20; ++k) lanes[k*n + t] = reference_[20*t + k];
+    }
+    reference_.swap(lanes);
+}
+
+
+void PlanarQuadBatch::measureChunk
+(
+    const std::size_t t0,
+    const std::size_t t1,
+    const double* x,
+    double* q,
+    const TetQuality::Metric metric,
+    LaneArrays& s,
+    WorstBatch& finals
+) const
+{
+    const std::size_t n = t1 - t0;
+    s.resize(n);
+    for (std::size_t t = 0; t < n; ++t)
+    {
+        const int* v = &points_[4*(t0 + t)];
+        for (int k = 0; k < 4; ++k)
+        {
+            s.in(2*k, t) = x[2*std::size_t(v[k])];
+            s.in(2*k + 1, t) = x[2*std::size_t(v[k]) + 1];
+        }
+    }
+    tetKernel::dispatch<QuadKernel>
+    (
+        metric, finals.wide(), n, s.inData(), s.stride(), reference_.data() + t0, stride_,
+        s.outData()
+    );
+    for (std::size_t t = 0; t < n; ++t)
+    {
+        if (s.out(1, t) == 0)
+        {
+            q[cells_[t0 + t]] = s.out(0, t);
+            continue;
+        }
+        TetMeasures::Worst worst(metric);
+        for (int j = 0; j < 4; ++j) worst.add(s.out(2 + 2*j, t), s.out(3 + 2*j, t));
+        finals.add(worst, q + cells_[t0 + t]);
+    }
+    finals.finish();
+}
+
+
+void PlanarQuadBatch::measure
+(
+    const double* x,
+    double* q,
+    const TetQuality::Metric metric,
+    const bool wide
+) const
+{
+    LaneArrays s(nIn, nOut);
+    WorstBatch finals(metric, wide);
+    const long nChunks = long((size() + chunkSize - 1)/chunkSize);
+    #pragma omp for schedule(static)
+    for (long c = 0; c < nChunks; ++c)
+    {
+        const std::size_t t0 = std::size_t(c)*chunkSize;
+        measureChunk(t0, std::min(size(), t0 + chunkSize), x, q, metric, s, finals);
+    }
+}
+
+} // namespace dcprbf
