@@ -96,10 +96,8 @@ PlanarCellQualityScan::PlanarCellQualityScan
             const int a = polygonPoints_[j0], b = polygonPoints_[j0 + 1], c = polygonPoints_[j0 + 2];
             const double ea[2] = {at(b, 0) - at(a, 0), at(b, 1) - at(a, 1)};
             const double eb[2] = {at(c, 0) - at(a, 0), at(c, 1) - at(a, 1)};
-            degenerate_.push_back(inverse(ea, eb, one));
-            inverse0_.insert(inverse0_.end(), one, one + 4);
-            otherCells_.push_back(i);
-            mapStart_.push_back(degenerate_.size());
+            degenerate[0] = inverse(ea, eb, one);
+            triangles_.add(i, &polygonPoints_[j0], one, degenerate);
             continue;
         }
         double c0[2] = {0, 0};
@@ -135,6 +133,7 @@ PlanarCellQualityScan::PlanarCellQualityScan
             mapStart_.push_back(degenerate_.size());
         }
     }
+    triangles_.finishAdding();
     quads_.finishAdding();
 }
 
@@ -150,16 +149,6 @@ void PlanarCellQualityScan::addMaps
     const std::size_t i = otherCells_[k];
     const std::size_t j0 = polygonStart_[i], j1 = polygonStart_[i + 1];
     std::size_t m = mapStart_[k];
-    if (j1 - j0 == 3)
-    {
-        const int a = polygonPoints_[j0], b = polygonPoints_[j0 + 1], c = polygonPoints_[j0 + 2];
-        batch.set
-        (
-            t, x[2*b] - x[2*a], x[2*b + 1] - x[2*a + 1], x[2*c] - x[2*a], x[2*c + 1] - x[2*a + 1],
-            &inverse0_[4*m], degenerate_[m]
-        );
-        return;
-    }
     const double n = double(j1 - j0);
     double c[2] = {0, 0};
     for (std::size_t j = j0; j < j1; ++j)
@@ -199,10 +188,11 @@ void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide)
             x[2*i] = p[3*std::size_t(pointIds_[i]) + axis0_];
             x[2*i + 1] = p[3*std::size_t(pointIds_[i]) + axis1_];
         }
-        // The quadrilaterals (PlanarQuadBatch: one cell per SIMD lane);
-        // per block of the other cells: the maps into a PlanarMapBatch
-        // (SIMD), each cell's worst, the ranked worst's qualities in SIMD
-        // lanes
+        // The triangles and quadrilaterals (PlanarPolygonBatch: one cell
+        // per SIMD lane); per block of the other cells: the maps into a
+        // PlanarMapBatch (SIMD), each cell's worst, the ranked worst's
+        // qualities in SIMD lanes
+        triangles_.measure(x, q, metric_, wide);
         quads_.measure(x, q, metric_, wide);
         PlanarMapBatch maps;
         WorstBatch finals(metric_, wide);

@@ -12,10 +12,11 @@
 // the value of CellQualityScan on the prism (equal to round-off), from n
 // 2 x 2 maps instead of 6n tetrahedra (a quadrilateral: 4 instead of 24);
 // a triangle cell: one map, its own (each triangle of the decomposition is
-// an affine image of it; the same F to round-off), measured in SIMD lanes
-// (PlanarMapBatch), the cells' final qualities too (WorstBatch); a
-// quadrilateral: one cell per SIMD lane from its points to its quality
-// (PlanarQuadBatch: the same operations and values).
+// an affine image of it; the same F to round-off). Triangles and
+// quadrilaterals: one cell per SIMD lane from its points to its quality
+// (PlanarPolygonBatch); the other polygons' maps in SIMD lanes
+// (PlanarMapBatch), their final qualities too (WorstBatch): the same
+// operations and values.
 // A degenerate reference triangle (quality 1 by TetQuality's convention) is
 // judged in the plane: for references within ~1e-14 of degenerate, or thinner
 // in the plane than ~1e-7 of the extrusion, the conventions can differ.
@@ -25,7 +26,7 @@
 #pragma once
 
 #include "PlanarMapBatch.hpp"
-#include "PlanarQuadBatch.hpp"
+#include "PlanarPolygonBatch.hpp"
 #include "TetMeasures.hpp"
 #include "TetQuality.hpp"
 
@@ -75,17 +76,18 @@ private:
     mutable std::unique_ptr<double[]> compact_;
     TetQuality::Metric metric_;
 
-    //- The quadrilaterals (most cells of a 2D mesh), in SIMD lanes
-    PlanarQuadBatch quads_;
+    //- The triangles and quadrilaterals (nearly every cell of a 2D mesh),
+    //  one per SIMD lane
+    PlanarPolygonBatch<3> triangles_;
+    PlanarPolygonBatch<4> quads_;
 
-    //- The other cells (triangles, polygons of n >= 5 points)
+    //- The other cells (polygons of n >= 5 points)
     std::vector<std::size_t> otherCells_;
 
-    //- Per map (a triangle cell: one, its own; a polygon of n >= 5
-    //  points: n, the triangles of the centre and the edge from point j),
-    //  cell otherCells_[k]'s maps from mapStart_[k]: the inverse of its
-    //  reference edge matrix (2 x 2, row major), and whether that is
-    //  degenerate
+    //- Per map (n per polygon: the triangles of the centre and the edge
+    //  from point j), cell otherCells_[k]'s maps from mapStart_[k]: the
+    //  inverse of its reference edge matrix (2 x 2, row major), and whether
+    //  that is degenerate
     std::vector<std::size_t> mapStart_;
     std::vector<double> inverse0_;
     std::vector<char> degenerate_;

@@ -193,77 +193,87 @@ TEST(PlanarCellQualityScan, SimdBuildsBitIdentical)
 }
 
 
-TEST(PlanarCellQualityScan, QuadrilateralsOfEveryKindEqualTheirTrianglesQualities)
+TEST(PlanarCellQualityScan, PolygonsOfEveryKindEqualTheirTrianglesQualities)
 {
-    // 400 separate quadrilaterals (several of PlanarQuadBatch's chunks),
-    // each with its own points, moved each by its own map: a shear, a
-    // scaling by 1e16 or 1e-16 (J beyond the rank key's range: the scalar
-    // path), a reflection (inverted), one point pushed across the centre
-    // (some triangles inverted), a flat reference (quality 1; the points
-    // overlap: the cells are separate); the value:
-    // the least TetQuality of the four triangles (vertex average, edge)
-    const int n = 400;
-    std::mt19937 gen(11);
-    std::uniform_real_distribution<double> u(-0.2, 0.2);
-    std::vector<double> p0(12*n), p(12*n);
-    std::vector<std::size_t> start{0};
-    std::vector<int> polygon;
-    for (int c = 0; c < n; ++c)
+    // 400 separate triangles, quadrilaterals or pentagons (several of
+    // PlanarPolygonBatch's chunks; pentagons: PlanarMapBatch), each with its
+    // own points, moved each by its own map: a shear, a scaling by 1e16 or
+    // 1e-16 (J beyond the rank key's range: the scalar path), a reflection
+    // (inverted), one point pushed across (some triangles inverted), a flat
+    // reference (quality 1; the points overlap: the cells are separate);
+    // the value: the least TetQuality of the triangles (a triangle: its
+    // own; else those of the vertex average and an edge)
+    const double corners[5][2] = {{0, 0}, {1, 0}, {1.2, 0.6}, {0.5, 1}, {-0.2, 0.6}};
+    for (const int N : {3, 4, 5})
     {
-        const double corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        const int kind = c % 6;
-        for (int k = 0; k < 4; ++k)
-        {
-            double* r = &p0[3*(4*c + k)];
-            r[0] = corner[k][0] + u(gen);
-            r[1] = kind == 5 ? 0.5*r[0] : corner[k][1] + u(gen);   // flat
-            r[2] = 0;
-            const double x = r[0], y = r[1];
-            const double scale = kind == 1 ? 1e16 : kind == 2 ? 1e-16 : 1.0;
-            double* m = &p[3*(4*c + k)];
-            m[0] = scale*(kind == 3 ? -x : x + 0.3*y);
-            m[1] = scale*y + (kind == 4 && k == 0 ? 2.0 : 0.0);
-            m[2] = 0;
-            polygon.push_back(4*c + k);
-        }
-        start.push_back(polygon.size());
-    }
-    for (const auto metric : {TetQuality::Metric::sizeShape, TetQuality::Metric::size,
-                              TetQuality::Metric::shape})
-    {
-        const PlanarCellQualityScan scan(start, polygon, p0.data(), 0, 1, metric);
-        std::vector<double> q(n);
-        scan.measure(p.data(), q.data());
-        int nTiny = 0, nInverted = 0, nOne = 0;
+        const int n = 400;
+        std::mt19937 gen(11);
+        std::uniform_real_distribution<double> u(-0.1, 0.1);
+        std::vector<double> p0(3*N*n), p(3*N*n);
+        std::vector<std::size_t> start{0};
+        std::vector<int> polygon;
         for (int c = 0; c < n; ++c)
         {
-            // (A = diag(F, 1): the edges (a - centre, b - centre, unit z))
-            const auto edges = [&](const std::vector<double>& x, const int j)
+            const int kind = c % 6;
+            for (int k = 0; k < N; ++k)
             {
-                Eigen::Matrix3d E = Eigen::Matrix3d::Identity();
-                for (int d = 0; d < 2; ++d)
-                {
-                    double centre = 0;
-                    for (int k = 0; k < 4; ++k) centre += x[3*(4*c + k) + d]/4;
-                    E(d, 0) = x[3*(4*c + j) + d] - centre;
-                    E(d, 1) = x[3*(4*c + (j + 1) % 4) + d] - centre;
-                }
-                return E;
-            };
-            double expected = 1e308;
-            for (int j = 0; j < 4; ++j)
-            {
-                expected =
-                    std::min(expected, TetQuality::compute(edges(p0, j), edges(p, j), metric));
+                double* r = &p0[3*(N*c + k)];
+                r[0] = corners[N == 3 ? 2*k % 5 : k][0] + u(gen);
+                r[1] = kind == 5 ? 0.5*r[0] : corners[N == 3 ? 2*k % 5 : k][1] + u(gen);
+                r[2] = 0;
+                const double x = r[0], y = r[1];
+                const double scale = kind == 1 ? 1e16 : kind == 2 ? 1e-16 : 1.0;
+                double* m = &p[3*(N*c + k)];
+                m[0] = scale*(kind == 3 ? -x : x + 0.3*y);
+                m[1] = scale*y + (kind == 4 && k == 0 ? 2.0 : 0.0);
+                m[2] = 0;
+                polygon.push_back(N*c + k);
             }
-            EXPECT_NEAR(q[c], expected, 1e-12*std::abs(expected)) << c;
-            nTiny += (expected > 0 && expected < 1e-8);
-            nInverted += (expected <= 0);
-            nOne += (expected == 1);
+            start.push_back(polygon.size());
         }
-        EXPECT_GT(nTiny, 100);
-        EXPECT_GT(nInverted, 100);
-        EXPECT_GT(nOne, 50);
+        for (const auto metric : {TetQuality::Metric::sizeShape, TetQuality::Metric::size,
+                                  TetQuality::Metric::shape})
+        {
+            const PlanarCellQualityScan scan(start, polygon, p0.data(), 0, 1, metric);
+            std::vector<double> q(n);
+            scan.measure(p.data(), q.data());
+            int nTiny = 0, nInverted = 0, nOne = 0;
+            for (int c = 0; c < n; ++c)
+            {
+                // (A = diag(F, 1): the edges (a - o, b - o, unit z), o the
+                // vertex average or, a triangle, its point 0)
+                const auto edges = [&](const std::vector<double>& x, const int j)
+                {
+                    Eigen::Matrix3d E = Eigen::Matrix3d::Identity();
+                    const double* v = &x[3*N*c];
+                    for (int d = 0; d < 2; ++d)
+                    {
+                        double o = 0;
+                        for (int k = 0; k < N; ++k) o += v[3*k + d]/N;
+                        o = N == 3 ? v[d] : o;
+                        const int a = N == 3 ? 1 : j, b = N == 3 ? 2 : (j + 1) % N;
+                        E(d, 0) = v[3*a + d] - o;
+                        E(d, 1) = v[3*b + d] - o;
+                    }
+                    return E;
+                };
+                double expected = 1e308;
+                for (int j = 0; j < (N == 3 ? 1 : N); ++j)
+                {
+                    expected = std::min
+                    (
+                        expected, TetQuality::compute(edges(p0, j), edges(p, j), metric)
+                    );
+                }
+                EXPECT_NEAR(q[c], expected, 1e-12*std::abs(expected)) << N << " " << c;
+                nTiny += (expected > 0 && expected < 1e-8);
+                nInverted += (expected <= 0);
+                nOne += (expected == 1);
+            }
+            EXPECT_GT(nTiny, 100);
+            EXPECT_GT(nInverted, 50);
+            EXPECT_GT(nOne, 50);
+        }
     }
 }
 

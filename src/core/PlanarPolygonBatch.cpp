@@ -1,5 +1,5 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
-#include "PlanarQuadBatch.hpp"
+#include "PlanarPolygonBatch.hpp"
 
 #include "TetKernel.hpp"
 #include "TetMeasures.hpp"
@@ -12,12 +12,8 @@ namespace dcprbf
 namespace
 {
 
-//- Quadrilaterals per chunk: a chunk's lanes stay in the L1 cache
+//- Cells per chunk: a chunk's lanes stay in the L1 cache
 constexpr std::size_t chunkSize = 128;
-
-//- In: the four current points (x y each); out: the quality, the number
-//  of maps beyond the key's range, J and |A|^2 of each map
-constexpr int nIn = 8, nOut = 10;
 
 //- What TetMeasures::Worst keeps, as lane values (selects only)
 struct Worst
@@ -26,9 +22,9 @@ struct Worst
 };
 
 
-//- Map j: current edges fa, fb; its reference (inverse, flag) from r,
-//  components ss apart; J and |A|^2 into o (so apart)
-template<int M>
+//- Map j of nMaps: current edges fa, fb; its reference (inverse, flag)
+//  from r, components ss apart; J and |A|^2 into o (so apart)
+template<int M, int nMaps>
 DCPRBF_ALWAYS_INLINE void addMap
 (
     Worst& w,
@@ -48,7 +44,7 @@ DCPRBF_ALWAYS_INLINE void addMap
     const double f10 = fa1*i00 + fb1*i10, f11 = fa1*i01 + fb1*i11;
     const double Jf = f00*f11 - f01*f10;
     const double a2f = f00*f00 + f01*f01 + f10*f10 + f11*f11 + 1;
-    const bool degenerate = r[(16 + j)*ss] > 0;
+    const bool degenerate = r[(4*nMaps + j)*ss] > 0;
     const double J = degenerate ? -1.0 : Jf;
     const double a2 = degenerate ? -1.0 : a2f;
     const double k = tetKernel::key<M>(J, a2);
@@ -73,7 +69,52 @@ DCPRBF_ALWAYS_INLINE void addMap
 }
 
 
-struct QuadKernel
+//- WorstBatch: the ranked worst's quality, the least with the others
+template<int M>
+DCPRBF_ALWAYS_INLINE double finalQuality(const Worst& w)
+{
+    const double qr = tetKernel::quality<M>(w.J, w.a2);
+    const double qm = qr < w.other ? qr : w.other;
+    return w.key < 1e308 ? qm : w.other;
+}
+
+
+//- In: the N current points (x y each), components sx apart; the
+//  references r, ss apart; out (sx apart): the quality, the number of maps
+//  beyond the key's range, J and |A|^2 of each map
+template<int N>
+struct Kernel;
+
+template<>
+struct Kernel<3>
+{
+template<int M>
+static DCPRBF_ALWAYS_INLINE void run
+(
+    const std::size_t n,
+    const double* __restrict x,
+    const std::size_t sx,
+    const double* __restrict r,
+    const std::size_t ss,
+    double* __restrict out
+)
+{
+    #pragma omp simd
+    for (std::size_t t = 0; t < n; ++t)
+    {
+        const double* p = x + t;
+        const double x0 = p[0], y0 = p[sx], x1 = p[2*sx], y1 = p[3*sx];
+        const double x2 = p[4*sx], y2 = p[5*sx];
+        Worst w;
+        addMap<M, 1>(w, 0, x1 - x0, y1 - y0, x2 - x0, y2 - y0, r + t, ss, out + t, sx);
+        out[t] = finalQuality<M>(w);
+        out[sx + t] = w.beyond;
+    }
+}
+};
+
+template<>
+struct Kernel<4>
 {
 template<int M>
 static DCPRBF_ALWAYS_INLINE void run
@@ -99,15 +140,11 @@ static DCPRBF_ALWAYS_INLINE void run
         const double ax = x0 - c0, ay = y0 - c1, bx = x1 - c0, by = y1 - c1;
         const double dx = x2 - c0, dy = y2 - c1, ex = x3 - c0, ey = y3 - c1;
         Worst w;
-        addMap<M>(w, 0, ax, ay, bx, by, r + t, ss, out + t, sx);
-        addMap<M>(w, 1, bx, by, dx, dy, r + t, ss, out + t, sx);
-        addMap<M>(w, 2, dx, dy, ex, ey, r + t, ss, out + t, sx);
-        addMap<M>(w, 3, ex, ey, ax, ay, r + t, ss, out + t, sx);
-
-        // WorstBatch: the ranked worst's quality, the least with the others
-        const double qr = tetKernel::quality<M>(w.J, w.a2);
-        const double qm = qr < w.other ? qr : w.other;
-        out[t] = w.key < 1e308 ? qm : w.other;
+        addMap<M, 4>(w, 0, ax, ay, bx, by, r + t, ss, out + t, sx);
+        addMap<M, 4>(w, 1, bx, by, dx, dy, r + t, ss, out + t, sx);
+        addMap<M, 4>(w, 2, dx, dy, ex, ey, r + t, ss, out + t, sx);
+        addMap<M, 4>(w, 3, ex, ey, ax, ay, r + t, ss, out + t, sx);
+        out[t] = finalQuality<M>(w);
         out[sx + t] = w.beyond;
     }
 }
@@ -116,35 +153,38 @@ static DCPRBF_ALWAYS_INLINE void run
 } // namespace
 
 
-void PlanarQuadBatch::add
+template<int N>
+void PlanarPolygonBatch<N>::add
 (
     const std::size_t cell,
-    const int points[4],
-    const double inverse[16],
-    const bool degenerate[4]
+    const int points[N],
+    const double inverse[4*nMaps],
+    const bool degenerate[nMaps]
 )
 {
     cells_.push_back(cell);
-    points_.insert(points_.end(), points, points + 4);
-    reference_.insert(reference_.end(), inverse, inverse + 16);
-    for (int j = 0; j < 4; ++j) reference_.push_back(degenerate[j] ? 1.0 : 0.0);
+    points_.insert(points_.end(), points, points + N);
+    reference_.insert(reference_.end(), inverse, inverse + 4*nMaps);
+    for (int j = 0; j < nMaps; ++j) reference_.push_back(degenerate[j] ? 1.0 : 0.0);
 }
 
 
-void PlanarQuadBatch::finishAdding()
+template<int N>
+void PlanarPolygonBatch<N>::finishAdding()
 {
-    const std::size_t n = size();
+    const std::size_t n = size(), nc = 5*nMaps;
     stride_ = n;
-    std::vector<double> lanes(20*n);
+    std::vector<double> lanes(nc*n);
     for (std::size_t t = 0; t < n; ++t)
     {
-        for (std::size_t k = 0; k < 20; ++k) lanes[k*n + t] = reference_[20*t + k];
+        for (std::size_t k = 0; k < nc; ++k) lanes[k*n + t] = reference_[nc*t + k];
     }
     reference_.swap(lanes);
 }
 
 
-void PlanarQuadBatch::measureChunk
+template<int N>
+void PlanarPolygonBatch<N>::measureChunk
 (
     const std::size_t t0,
     const std::size_t t1,
@@ -159,14 +199,14 @@ void PlanarQuadBatch::measureChunk
     s.resize(n);
     for (std::size_t t = 0; t < n; ++t)
     {
-        const int* v = &points_[4*(t0 + t)];
-        for (int k = 0; k < 4; ++k)
+        const int* v = &points_[N*(t0 + t)];
+        for (int k = 0; k < N; ++k)
         {
             s.in(2*k, t) = x[2*std::size_t(v[k])];
             s.in(2*k + 1, t) = x[2*std::size_t(v[k]) + 1];
         }
     }
-    tetKernel::dispatch<QuadKernel>
+    tetKernel::dispatch<Kernel<N>>
     (
         metric, finals.wide(), n, s.inData(), s.stride(), reference_.data() + t0, stride_,
         s.outData()
@@ -179,14 +219,15 @@ void PlanarQuadBatch::measureChunk
             continue;
         }
         TetMeasures::Worst worst(metric);
-        for (int j = 0; j < 4; ++j) worst.add(s.out(2 + 2*j, t), s.out(3 + 2*j, t));
+        for (int j = 0; j < nMaps; ++j) worst.add(s.out(2 + 2*j, t), s.out(3 + 2*j, t));
         finals.add(worst, q + cells_[t0 + t]);
     }
     finals.finish();
 }
 
 
-void PlanarQuadBatch::measure
+template<int N>
+void PlanarPolygonBatch<N>::measure
 (
     const double* x,
     double* q,
@@ -194,7 +235,7 @@ void PlanarQuadBatch::measure
     const bool wide
 ) const
 {
-    LaneArrays s(nIn, nOut);
+    LaneArrays s(2*N, 2 + 2*nMaps);
     WorstBatch finals(metric, wide);
     const long nChunks = long((size() + chunkSize - 1)/chunkSize);
     #pragma omp for schedule(static)
@@ -204,5 +245,9 @@ void PlanarQuadBatch::measure
         measureChunk(t0, std::min(size(), t0 + chunkSize), x, q, metric, s, finals);
     }
 }
+
+
+template class PlanarPolygonBatch<3>;
+template class PlanarPolygonBatch<4>;
 
 } // namespace dcprbf
