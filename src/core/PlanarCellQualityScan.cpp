@@ -93,7 +93,8 @@ PlanarCellQualityScan::PlanarCellQualityScan
         const std::size_t j0 = polygonStart_[i], j1 = polygonStart_[i + 1];
         if (j1 - j0 == 3)
         {
-            const int a = polygonPoints_[j0], b = polygonPoints_[j0 + 1], c = polygonPoints_[j0 + 2];
+            const int a = polygonPoints_[j0], b = polygonPoints_[j0 + 1];
+            const int c = polygonPoints_[j0 + 2];
             const double ea[2] = {at(b, 0) - at(a, 0), at(b, 1) - at(a, 1)};
             const double eb[2] = {at(c, 0) - at(a, 0), at(c, 1) - at(a, 1)};
             degenerate[0] = inverse(ea, eb, one);

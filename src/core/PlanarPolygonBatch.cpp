@@ -16,7 +16,7 @@ namespace
 constexpr std::size_t chunkSize = 128;
 
 //- What TetMeasures::Worst keeps, as lane values (selects only)
-struct Worst
+struct LaneWorst
 {
     double J = 1, a2 = 3, key = 1e308, other = 1e308, beyond = 0;
 };
@@ -27,7 +27,7 @@ struct Worst
 template<int M, int nMaps>
 DCPRBF_ALWAYS_INLINE void addMap
 (
-    Worst& w,
+    LaneWorst& w,
     const int j,
     const double fa0, const double fa1,
     const double fb0, const double fb1,
@@ -71,7 +71,7 @@ DCPRBF_ALWAYS_INLINE void addMap
 
 //- WorstBatch: the ranked worst's quality, the least with the others
 template<int M>
-DCPRBF_ALWAYS_INLINE double finalQuality(const Worst& w)
+DCPRBF_ALWAYS_INLINE double finalQuality(const LaneWorst& w)
 {
     const double qr = tetKernel::quality<M>(w.J, w.a2);
     const double qm = qr < w.other ? qr : w.other;
@@ -105,7 +105,7 @@ static DCPRBF_ALWAYS_INLINE void run
         const double* p = x + t;
         const double x0 = p[0], y0 = p[sx], x1 = p[2*sx], y1 = p[3*sx];
         const double x2 = p[4*sx], y2 = p[5*sx];
-        Worst w;
+        LaneWorst w;
         addMap<M, 1>(w, 0, x1 - x0, y1 - y0, x2 - x0, y2 - y0, r + t, ss, out + t, sx);
         out[t] = finalQuality<M>(w);
         out[sx + t] = w.beyond;
@@ -137,13 +137,14 @@ static DCPRBF_ALWAYS_INLINE void run
         const double cx = (((0.0 + x0) + x1) + x2) + x3;
         const double cy = (((0.0 + y0) + y1) + y2) + y3;
         const double c0 = cx/4.0, c1 = cy/4.0;
-        const double ax = x0 - c0, ay = y0 - c1, bx = x1 - c0, by = y1 - c1;
-        const double dx = x2 - c0, dy = y2 - c1, ex = x3 - c0, ey = y3 - c1;
-        Worst w;
-        addMap<M, 4>(w, 0, ax, ay, bx, by, r + t, ss, out + t, sx);
-        addMap<M, 4>(w, 1, bx, by, dx, dy, r + t, ss, out + t, sx);
-        addMap<M, 4>(w, 2, dx, dy, ex, ey, r + t, ss, out + t, sx);
-        addMap<M, 4>(w, 3, ex, ey, ax, ay, r + t, ss, out + t, sx);
+        // the points from the vertex average
+        const double u0 = x0 - c0, v0 = y0 - c1, u1 = x1 - c0, v1 = y1 - c1;
+        const double u2 = x2 - c0, v2 = y2 - c1, u3 = x3 - c0, v3 = y3 - c1;
+        LaneWorst w;
+        addMap<M, 4>(w, 0, u0, v0, u1, v1, r + t, ss, out + t, sx);
+        addMap<M, 4>(w, 1, u1, v1, u2, v2, r + t, ss, out + t, sx);
+        addMap<M, 4>(w, 2, u2, v2, u3, v3, r + t, ss, out + t, sx);
+        addMap<M, 4>(w, 3, u3, v3, u0, v0, r + t, ss, out + t, sx);
         out[t] = finalQuality<M>(w);
         out[sx + t] = w.beyond;
     }

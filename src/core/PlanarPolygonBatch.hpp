@@ -7,13 +7,13 @@
 // The maps are PlanarCellQualityScan's: a triangle's own, F = (b - a, c - a)
 // E0^-1; a quadrilateral's four, the triangles of the vertex average c and
 // the edge from point j, F = (a - c, b - c) E0^-1 (E0^-1 precomputed, kept
-// here in lanes); per lane the maps' J and |A|^2,
-// their rank keys, the ranked worst (TetMeasures::Worst's rule: the least
-// key, the first of equal keys), the least quality of the inverted (J) and
-// degenerate (1) maps and the final quality (tetKernel::quality): the same
-// operations, so the same bits, as PlanarMapBatch, TetMeasures::Worst and
-// WorstBatch. A cell with a map of positive J beyond the key's range (J or
-// |A|^2 extreme) is finished from its maps' J and |A|^2 by those classes.
+// here in lanes); per lane the maps' J and |A|^2, their rank keys, the
+// ranked worst (TetMeasures::Worst's rule: the least key, the first of equal
+// keys), the least quality of the inverted (J) and degenerate (1) maps and
+// the final quality (tetKernel::quality): the same operations, so the same
+// bits, as PlanarMapBatch, TetMeasures::Worst and WorstBatch. A cell with
+// a map of positive J beyond the key's range (J or |A|^2 extreme) is
+// finished from its maps' J and |A|^2 by those classes.
 #pragma once
 
 #include "LaneArrays.hpp"
@@ -65,8 +65,9 @@ private:
     std::vector<std::size_t> cells_;
     std::vector<int> points_;
 
-    //- While adding: 5 values per map (4 inverse entries, then the
-    //  flags); after finishAdding: component k of cell t at k stride_ + t
+    //- While adding: 5 nMaps values per cell (the maps' inverses, 4
+    //  entries each, then their flags); after finishAdding: component k of
+    //  cell t at k stride_ + t
     std::vector<double> reference_;
     std::size_t stride_ = 0;
 

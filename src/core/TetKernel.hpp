@@ -37,7 +37,7 @@
     #pragma GCC optimize("no-trapping-math", "no-math-errno", "fp-contract=off")
     #define DCPRBF_AVX2 1
     #ifndef __NO_MATH_ERRNO__
-        #warning "dcpRBF: compile with -fno-math-errno: else the sizeShape quality kernels are scalar"
+        #pragma GCC warning "dcpRBF: compile with -fno-math-errno: else the sizeShape quality kernels are scalar"
     #endif
 #else
     #define DCPRBF_AVX2 0
