@@ -15,6 +15,22 @@ License
 #include <algorithm>
 #include <cmath>
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::boolList Foam::dcpRBFBoundaryCorrection::interiorMask
+(
+    const dcpRBFBoundaryPoints& boundary
+)
+{
+    boolList interior(boundary.kinds().size());
+    forAll(interior, pointi)
+    {
+        interior[pointi] = boundary.kind(pointi) == dcpRBFBoundaryPoints::interiorPoint;
+    }
+    return interior;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
@@ -24,13 +40,30 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
     const scalar maxRadius
 )
 :
-    maxRadius_(maxRadius)
+    dcpRBFBoundaryCorrection
+    (
+        evalPoints, boundary.points(), interiorMask(boundary), maxRadius
+    )
+{}
+
+
+Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
+(
+    const dcprbf::Points& evalPoints,
+    const dcprbf::Points& targets,
+    const boolList& corrected,
+    const scalar maxRadius,
+    const scalarField& targetRadius
+)
+:
+    maxRadius_(maxRadius),
+    targetRadius_(targetRadius)
 {
-    if (boundary.size() == 0)
+    if (targets.rows() == 0)
     {
         return;
     }
-    const dcprbf::PointTree tree(boundary.points());
+    const dcprbf::PointTree tree(targets);
     const label n = label(evalPoints.rows());
     labelList nearest(n, -1);
     scalarField distance(n, GREAT);
@@ -38,7 +71,7 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        if (boundary.kind(i) != dcpRBFBoundaryPoints::interiorPoint)
+        if (!corrected[i])
         {
             continue;
         }
@@ -85,8 +118,14 @@ Foam::scalar Foam::dcpRBFBoundaryCorrection::apply
     const dcprbf::kernels::WendlandC2 phi{1.0/R};
     for (label k = 0; k < point_.size() && distance_[k] < R; ++k)
     {
-        displacement[point_[k]] +=
-            phi(distance_[k])*projection.fromCore(error.row(nearest_[k]).data());
+        const label b = nearest_[k];
+        const scalar weight =
+            targetRadius_.empty() || targetRadius_[b] >= R
+          ? phi(distance_[k])
+          : distance_[k] < targetRadius_[b]
+          ? dcprbf::kernels::WendlandC2{1.0/targetRadius_[b]}(distance_[k])
+          : 0;
+        displacement[point_[k]] += weight*projection.fromCore(error.row(b).data());
     }
     return R;
 }

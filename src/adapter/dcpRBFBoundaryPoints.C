@@ -171,6 +171,15 @@ dcprbf::Values Foam::dcpRBFBoundaryPoints::gather
             local[i] = prescribed[localPoints_[i]];
         }
     }
+    return gatherLocal(local);
+}
+
+
+dcprbf::Values Foam::dcpRBFBoundaryPoints::gatherLocal
+(
+    const vectorField& local
+) const
+{
     const List<List<vector>> all(allGather<vector>(local));
 
     dcprbf::Values values(dcprbf::Values::Zero(size(), 3));

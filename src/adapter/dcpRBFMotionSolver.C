@@ -277,7 +277,7 @@ void Foam::dcpRBFMotionSolver::solve()
               ? projection_.fromCore(rotation_.displacement().row(pointi).data())
               : prescribed_[pointi];
         }
-        constrain();
+        constrainInterpolated();
         r.interpolateTime = timer.timeIncrement();
         measureQuality(r);
         guardQuality(d, r);

@@ -89,6 +89,15 @@ void Foam::dcpRBFMotionSolver::constrain()
 }
 
 
+void Foam::dcpRBFMotionSolver::constrainInterpolated()
+{
+    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    slipCorrection_.keep(disp);
+    constrain();
+    slipCorrection_.apply(projection_, disp);
+}
+
+
 Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
 (
     const dcprbf::Values& d
@@ -162,7 +171,7 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     {
         correction_.apply(error, projection_, disp);
     }
-    constrain();
+    constrainInterpolated();
 
     scalar err = 0;
     forAll(boundaryPoints_.moving(), i)

@@ -69,6 +69,12 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) cons
             hint =
                 string(dynamic ? "" : ", use selection dynamic")
               + (settings_.qualityFloor() > 0 ? "" : ", set a qualityFloor (e.g. 0.2)")
+              + (
+                    slipCorrection_.active() && settings_.polynomial()
+                  ? ", for a body rotating between sliding (slip) walls polynomial"
+                    " false (the linear part carries its rotation out to them)"
+                  : ""
+                )
               + " or, for large rotations, rotationInterpolation true."
               + " (A body moved by the flow, e.g. sixDoFRigidBodyDisplacement,"
                 " may itself have moved too far in one step: check its motion.)";
