@@ -100,8 +100,10 @@ void Foam::dcpRBFMotionSolver::checkPatches() const
             << "Patches in neither movingPatches nor staticPatches: "
             << unlisted << nl
             << "    Their points move with the interpolated displacement,"
-            << " then their own pointDisplacement condition applies"
-            << " (constraint patches such as symmetryPlane are not listed)."
+            << " then their own pointDisplacement condition applies (a slip"
+            << " wall's removes the normal part, which is spread back into the"
+            << " volume next to it; constraint patches such as symmetryPlane"
+            << " are not listed)."
             << endl;
     }
 }

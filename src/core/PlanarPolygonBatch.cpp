@@ -2,9 +2,11 @@
 #include "PlanarPolygonBatch.hpp"
 
 #include "TetKernel.hpp"
+#include "LaneWorst.hpp"
 #include "TetMeasures.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 namespace dcprbf
 {
@@ -14,13 +16,6 @@ namespace
 
 //- Cells per chunk: a chunk's lanes stay in the L1 cache
 constexpr std::size_t chunkSize = 128;
-
-//- What TetMeasures::Worst keeps, as lane values (selects only)
-struct LaneWorst
-{
-    double J = 1, a2 = 3, key = 1e308, other = 1e308, beyond = 0;
-};
-
 
 //- Map j of nMaps: current edges fa, fb; its reference (inverse, flag)
 //  from r, components ss apart; J and |A|^2 into o (so apart)
@@ -51,31 +46,57 @@ DCPRBF_ALWAYS_INLINE void addMap
     o[(2 + 2*j)*so] = J;
     o[(3 + 2*j)*so] = a2;
 
-    // TetMeasures::Worst::add: ranked (key in (1e-250, 1e250); keys are
-    // <= 1 here, |A|^2 >= 2 |J| + 1), the first of equal keys kept
-    const double kk = k > 1e-250 ? k : 1e308;
-    const double key0 = w.key;
-    w.J = kk < key0 ? J : w.J;
-    w.a2 = kk < key0 ? a2 : w.a2;
-    w.key = kk < key0 ? kk : key0;
-
-    // inverted (quality J) or degenerate reference (quality 1)
-    double q = J > 0 ? 1e308 : J;
-    q = a2 < 0 ? 1.0 : q;
-    w.other = q < w.other ? q : w.other;
-
-    // positive J beyond the key's range: the scalar path's
-    w.beyond += (J > 0 ? 1.0 : 0.0) - (k > 1e-250 ? 1.0 : 0.0);
+    w.add(J, a2, k);
 }
 
 
-//- WorstBatch: the ranked worst's quality, the least with the others
+//- A triangle's map (its own: edges from point 0) into w; the current
+//  points from p, components sx apart; the references from r (ss apart);
+//  J and |A|^2 into o (sx apart)
 template<int M>
-DCPRBF_ALWAYS_INLINE double finalQuality(const LaneWorst& w)
+DCPRBF_ALWAYS_INLINE void addMaps
+(
+    std::integral_constant<int, 3>,
+    LaneWorst& w,
+    const double* __restrict p,
+    const std::size_t sx,
+    const double* __restrict r,
+    const std::size_t ss,
+    double* __restrict o
+)
 {
-    const double qr = tetKernel::quality<M>(w.J, w.a2);
-    const double qm = qr < w.other ? qr : w.other;
-    return w.key < 1e308 ? qm : w.other;
+    const double x0 = p[0], y0 = p[sx], x1 = p[2*sx], y1 = p[3*sx];
+    const double x2 = p[4*sx], y2 = p[5*sx];
+    addMap<M, 1>(w, 0, x1 - x0, y1 - y0, x2 - x0, y2 - y0, r, ss, o, sx);
+}
+
+
+//- A quadrilateral's four maps (the vertex average, the edge from point j)
+template<int M>
+DCPRBF_ALWAYS_INLINE void addMaps
+(
+    std::integral_constant<int, 4>,
+    LaneWorst& w,
+    const double* __restrict p,
+    const std::size_t sx,
+    const double* __restrict r,
+    const std::size_t ss,
+    double* __restrict o
+)
+{
+    const double x0 = p[0], y0 = p[sx], x1 = p[2*sx], y1 = p[3*sx];
+    const double x2 = p[4*sx], y2 = p[5*sx], x3 = p[6*sx], y3 = p[7*sx];
+    // the vertex average as PlanarCellQualityScan sums it
+    const double cx = (((0.0 + x0) + x1) + x2) + x3;
+    const double cy = (((0.0 + y0) + y1) + y2) + y3;
+    const double c0 = cx/4.0, c1 = cy/4.0;
+    // the points from the vertex average
+    const double u0 = x0 - c0, v0 = y0 - c1, u1 = x1 - c0, v1 = y1 - c1;
+    const double u2 = x2 - c0, v2 = y2 - c1, u3 = x3 - c0, v3 = y3 - c1;
+    addMap<M, 4>(w, 0, u0, v0, u1, v1, r, ss, o, sx);
+    addMap<M, 4>(w, 1, u1, v1, u2, v2, r, ss, o, sx);
+    addMap<M, 4>(w, 2, u2, v2, u3, v3, r, ss, o, sx);
+    addMap<M, 4>(w, 3, u3, v3, u0, v0, r, ss, o, sx);
 }
 
 
@@ -83,10 +104,7 @@ DCPRBF_ALWAYS_INLINE double finalQuality(const LaneWorst& w)
 //  references r, ss apart; out (sx apart): the quality, the number of maps
 //  beyond the key's range, J and |A|^2 of each map
 template<int N>
-struct Kernel;
-
-template<>
-struct Kernel<3>
+struct Kernel
 {
 template<int M>
 static DCPRBF_ALWAYS_INLINE void run
@@ -102,50 +120,9 @@ static DCPRBF_ALWAYS_INLINE void run
     #pragma omp simd
     for (std::size_t t = 0; t < n; ++t)
     {
-        const double* p = x + t;
-        const double x0 = p[0], y0 = p[sx], x1 = p[2*sx], y1 = p[3*sx];
-        const double x2 = p[4*sx], y2 = p[5*sx];
         LaneWorst w;
-        addMap<M, 1>(w, 0, x1 - x0, y1 - y0, x2 - x0, y2 - y0, r + t, ss, out + t, sx);
-        out[t] = finalQuality<M>(w);
-        out[sx + t] = w.beyond;
-    }
-}
-};
-
-template<>
-struct Kernel<4>
-{
-template<int M>
-static DCPRBF_ALWAYS_INLINE void run
-(
-    const std::size_t n,
-    const double* __restrict x,
-    const std::size_t sx,
-    const double* __restrict r,
-    const std::size_t ss,
-    double* __restrict out
-)
-{
-    #pragma omp simd
-    for (std::size_t t = 0; t < n; ++t)
-    {
-        const double* p = x + t;
-        const double x0 = p[0], y0 = p[sx], x1 = p[2*sx], y1 = p[3*sx];
-        const double x2 = p[4*sx], y2 = p[5*sx], x3 = p[6*sx], y3 = p[7*sx];
-        // the vertex average as PlanarCellQualityScan sums it
-        const double cx = (((0.0 + x0) + x1) + x2) + x3;
-        const double cy = (((0.0 + y0) + y1) + y2) + y3;
-        const double c0 = cx/4.0, c1 = cy/4.0;
-        // the points from the vertex average
-        const double u0 = x0 - c0, v0 = y0 - c1, u1 = x1 - c0, v1 = y1 - c1;
-        const double u2 = x2 - c0, v2 = y2 - c1, u3 = x3 - c0, v3 = y3 - c1;
-        LaneWorst w;
-        addMap<M, 4>(w, 0, u0, v0, u1, v1, r + t, ss, out + t, sx);
-        addMap<M, 4>(w, 1, u1, v1, u2, v2, r + t, ss, out + t, sx);
-        addMap<M, 4>(w, 2, u2, v2, u3, v3, r + t, ss, out + t, sx);
-        addMap<M, 4>(w, 3, u3, v3, u0, v0, r + t, ss, out + t, sx);
-        out[t] = finalQuality<M>(w);
+        addMaps<M>(std::integral_constant<int, N>(), w, x + t, sx, r + t, ss, out + t);
+        out[t] = w.quality<M>();
         out[sx + t] = w.beyond;
     }
 }

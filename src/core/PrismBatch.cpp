@@ -2,6 +2,7 @@
 #include "PrismBatch.hpp"
 
 #include "TetKernel.hpp"
+#include "LaneWorst.hpp"
 
 #include <algorithm>
 
@@ -10,13 +11,6 @@ namespace dcprbf
 
 namespace
 {
-
-//- What TetMeasures::Worst keeps, as lane values (selects only)
-struct Worst
-{
-    double J = 1, a2 = 3, key = 1e308, other = 1e308, beyond = 0;
-};
-
 
 //- A point, scalarised by the compiler (no array in the SIMD loop)
 struct V3
@@ -45,7 +39,7 @@ DCPRBF_ALWAYS_INLINE V3 operator/(const V3& a, const double b)
 template<int M>
 DCPRBF_ALWAYS_INLINE void addTet
 (
-    Worst& w,
+    LaneWorst& w,
     double* o,
     const std::size_t s,
     const int t,
@@ -66,21 +60,7 @@ DCPRBF_ALWAYS_INLINE void addTet
     o[(5 + 2*t)*s] = J;
     o[(6 + 2*t)*s] = a2;
 
-    // ranked (TetMeasures::Worst: key in (1e-250, 1e250); keys are <= 1)
-    const double kk = k > 1e-250 ? k : 1e308;
-    const double key0 = w.key;
-    w.J = kk < key0 ? J : w.J;
-    w.a2 = kk < key0 ? a2 : w.a2;
-    w.key = kk < key0 ? kk : key0;
-
-    // inverted (quality J) or degenerate reference (quality 1)
-    double q = J > 0 ? 1e308 : J;
-    q = a2 < 0 ? 1.0 : q;
-    w.other = q < w.other ? q : w.other;
-
-    // positive J beyond the key's range (the scalar path's), counted (a
-    // ranked key implies J > 0; as a sum: a max of selects made GCC 12 fail)
-    w.beyond += (J > 0 ? 1.0 : 0.0) - (k > 1e-250 ? 1.0 : 0.0);
+    w.add(J, a2, k);
 }
 
 
@@ -91,7 +71,7 @@ DCPRBF_ALWAYS_INLINE void addTet
 template<int M>
 DCPRBF_ALWAYS_INLINE void addPrism
 (
-    Worst& w,
+    LaneWorst& w,
     double* o,
     const std::size_t s,
     const V3& r0, const V3& r1, const V3& r2, const V3& r3, const V3& r4, const V3& r5,
@@ -140,7 +120,7 @@ static DCPRBF_ALWAYS_INLINE void item
 {
     const double* v = in + p;
     #define DCPRBF_V3(k) V3{v[(3*(k))*s], v[(3*(k) + 1)*s], v[(3*(k) + 2)*s]}
-    Worst w;
+    LaneWorst w;
     addPrism<M>
     (
         w, out + p, s,
