@@ -71,6 +71,8 @@ void Foam::dcpRBFMotionSolver::constrain()
     pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
     forAll(bf, patchi)
     {
+        // each sliding patch's change kept for dcpRBFSlipCorrection
+        slipCorrection_.keep(patchi, pointDisplacement_.primitiveField());
         if (slipPatches_.handles(patchi))
         {
             slipPatches_.evaluate(pointDisplacement_, patchi);
@@ -79,6 +81,7 @@ void Foam::dcpRBFMotionSolver::constrain()
         {
             bf[patchi].evaluate();
         }
+        slipCorrection_.record(patchi, pointDisplacement_.primitiveField());
     }
     const pointConstraints& pcs = pointConstraints::New(pointDisplacement_.mesh());
     pointConstraints::syncUntransformedData
@@ -92,9 +95,13 @@ void Foam::dcpRBFMotionSolver::constrain()
 void Foam::dcpRBFMotionSolver::constrainInterpolated()
 {
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
-    slipCorrection_.keep(disp);
     constrain();
-    slipCorrection_.apply(projection_, disp);
+    if (slipCorrection_.apply(projection_, disp) > 0 && slipCorrection_.size() > 1)
+    {
+        // the walls' blends moved points of the other walls: their
+        // conditions once more
+        constrain();
+    }
 }
 
 

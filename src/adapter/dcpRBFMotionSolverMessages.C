@@ -90,6 +90,13 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) cons
                    " static patches is too large for the cells there (check"
                    " each body's centre is its pivot; refine the cells between"
                    " body and walls, or move the walls away)."
+                 : slipCorrection_.active()
+                 ? "reduce the motion per step; sliding (slip, symmetry) walls"
+                   " near the moving patches: list those the body does not"
+                   " touch under staticPatches (their points then stay put),"
+                   " or take supportRadius nearer the distance from the body"
+                   " to them (a larger one carries more of the motion out to"
+                   " the walls)"
                  : "reduce the motion per step, enlarge supportRadius"
                )
             << hint.c_str() << endl;

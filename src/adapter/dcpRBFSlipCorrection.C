@@ -60,63 +60,101 @@ Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
     boundary_(boundary)
 {
     const labelList ids(slidingPatches(mesh, movingPatchIDs, staticPatchIDs));
-    if (ids.empty())
-    {
-        return;
-    }
-    // the sliding points as the "moving" points of a second set
-    sliding_.reset
-    (
-        new dcpRBFBoundaryPoints(mesh, projection, ids, labelList(), points0)
-    );
-    if (sliding_->size() == 0)
-    {
-        sliding_.clear();
-        return;
-    }
-    // corrected: the points on no patch of either kind
-    boolList corrected(mesh.nPoints());
-    forAll(corrected, pointi)
-    {
-        corrected[pointi] =
-            boundary.kind(pointi) == dcpRBFBoundaryPoints::interiorPoint
-         && sliding_->kind(pointi) == dcpRBFBoundaryPoints::interiorPoint;
-    }
-    // each sliding point's blend stays clear of the moving patches (they
-    // are exact): within half its distance to the nearest moving point
-    const dcprbf::Points& x = sliding_->points();
-    scalarField radius(x.rows(), maxRadius);
+    wallOf_.setSize(mesh.boundaryMesh().size(), -1);
     const dcprbf::Points moving(boundary.movingPoints());
+    autoPtr<dcprbf::PointTree> movingTree;
     if (moving.rows())
     {
-        const dcprbf::PointTree tree(moving);
-        for (Eigen::Index i = 0; i < x.rows(); ++i)
-        {
-            double d2 = 0;
-            tree.nearest(x.row(i).data(), d2);
-            radius[i] = min(maxRadius, 0.5*std::sqrt(d2));
-        }
+        movingTree.reset(new dcprbf::PointTree(moving));
     }
-    blend_.reset
-    (
-        new dcpRBFBoundaryCorrection
+    for (const label patchi : ids)
+    {
+        // the patch's points as the "moving" points of a set of their own
+        // (the same patches on every processor: the same sets)
+        autoPtr<dcpRBFBoundaryPoints> points
         (
-            evalPoints, x, corrected, maxRadius, radius
-        )
-    );
-    before_.setSize(sliding_->localPoints().size(), Zero);
+            new dcpRBFBoundaryPoints
+            (
+                mesh, projection, labelList(1, patchi), labelList(), points0
+            )
+        );
+        if (points->size() == 0)
+        {
+            continue;
+        }
+        // corrected: the points on no moving or static patch and not on
+        // this one
+        boolList corrected(mesh.nPoints());
+        forAll(corrected, pointi)
+        {
+            const bool onThis =
+                points->kind(pointi) != dcpRBFBoundaryPoints::interiorPoint;
+            corrected[pointi] =
+                boundary.kind(pointi) == dcpRBFBoundaryPoints::interiorPoint
+             && !onThis;
+        }
+        // each point's blend stays clear of the moving patches (they are
+        // exact): within half its distance to the nearest moving point
+        const dcprbf::Points& x = points->points();
+        scalarField radius(x.rows(), maxRadius);
+        if (movingTree.valid())
+        {
+            for (Eigen::Index i = 0; i < x.rows(); ++i)
+            {
+                double d2 = 0;
+                movingTree->nearest(x.row(i).data(), d2);
+                radius[i] = min(maxRadius, 0.5*std::sqrt(d2));
+            }
+        }
+        wall* w = new wall;
+        w->blend.reset
+        (
+            new dcpRBFBoundaryCorrection(evalPoints, x, corrected, maxRadius, radius)
+        );
+        w->patchi = patchi;
+        w->before.setSize(points->localPoints().size(), Zero);
+        w->change.setSize(points->localPoints().size(), Zero);
+        w->points = std::move(points);
+        wallOf_[patchi] = walls_.size();
+        walls_.append(w);
+    }
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dcpRBFSlipCorrection::keep(const vectorField& displacement)
+void Foam::dcpRBFSlipCorrection::keep
+(
+    const label patchi,
+    const vectorField& displacement
+)
 {
-    if (!active())
+    if (wallOf_.size() && wallOf_[patchi] >= 0)
     {
-        return;
+        wall& w = walls_[wallOf_[patchi]];
+        w.before = vectorField(displacement, w.points->localPoints());
     }
-    before_ = vectorField(displacement, sliding_->localPoints());
+}
+
+
+void Foam::dcpRBFSlipCorrection::record
+(
+    const label patchi,
+    const vectorField& displacement
+)
+{
+    if (wallOf_.size() && wallOf_[patchi] >= 0)
+    {
+        wall& w = walls_[wallOf_[patchi]];
+        const labelList& local = w.points->localPoints();
+        forAll(local, i)
+        {
+            w.change[i] =
+                boundary_.kind(local[i]) == dcpRBFBoundaryPoints::interiorPoint
+              ? displacement[local[i]] - w.before[i]
+              : Zero;
+        }
+    }
 }
 
 
@@ -126,22 +164,19 @@ Foam::scalar Foam::dcpRBFSlipCorrection::apply
     vectorField& displacement
 ) const
 {
-    if (!active())
+    // every wall's change gathered first (the blends then move points of
+    // the other walls)
+    List<dcprbf::Values> changes(walls_.size());
+    forAll(walls_, w)
     {
-        return 0;
+        changes[w] = walls_[w].points->gatherLocal(walls_[w].change);
     }
-    // the change at the sliding points (none where a moving or static
-    // patch's condition sets the point)
-    const labelList& local = sliding_->localPoints();
-    vectorField change(local.size(), Zero);
-    forAll(local, i)
+    scalar radius = 0;
+    forAll(walls_, w)
     {
-        if (boundary_.kind(local[i]) == dcpRBFBoundaryPoints::interiorPoint)
-        {
-            change[i] = displacement[local[i]] - before_[i];
-        }
+        radius = max(radius, walls_[w].blend->apply(changes[w], projection, displacement));
     }
-    return blend_->apply(sliding_->gatherLocal(change), projection, displacement);
+    return radius;
 }
 
 
