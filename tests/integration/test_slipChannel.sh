@@ -44,23 +44,14 @@ gmsh.model.mesh.generate(3)
 gmsh.option.setNumber("Mesh.MshFileVersion", 2.2)
 gmsh.write("channel.msh"); gmsh.finalize()
 EOT
-    writeFile system/controlDict dictionary <<'EOT'
-application moveDynamicMesh; startFrom startTime; startTime 0; stopAt endTime;
-endTime 0.5; deltaT 0.05; writeControl timeStep; writeInterval 10;
-writeFormat ascii; writePrecision 17; timeFormat general; timePrecision 6;
-EOT
+    write_motionControls .
+    foamDictionary system/controlDict -entry endTime -set 0.5 > /dev/null
+    foamDictionary system/controlDict -entry deltaT -set 0.05 > /dev/null
+    foamDictionary system/controlDict -entry writeInterval -set 10 > /dev/null
     "$py" channel.py > log.mesh 2>&1 || fail "gmsh failed: $(tail -n 3 log.mesh)" || return 1
     run gmshToFoam channel.msh || return 1
     foamDictionary constant/polyMesh/boundary -entry entry0/frontAndBack/type -set empty > /dev/null
     foamDictionary constant/polyMesh/boundary -entry entry0/body/type -set wall > /dev/null
-    writeFile system/fvSchemes dictionary <<'EOT'
-ddtSchemes { default Euler; } gradSchemes { default Gauss linear; }
-divSchemes { default none; } laplacianSchemes { default Gauss linear corrected; }
-interpolationSchemes { default linear; } snGradSchemes { default corrected; }
-EOT
-    writeFile system/fvSolution dictionary <<'EOT'
-solvers {}
-EOT
     writeFile 0/pointDisplacement pointVectorField <<'EOT'
 dimensions [0 1 0 0 0 0 0];
 internalField uniform (0 0 0);

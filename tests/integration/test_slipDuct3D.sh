@@ -58,19 +58,10 @@ with open("system/blockMeshDict", "w") as o:
         o.write("  %s { type %s; faces (%s); }\n" % (n, types[n], " ".join("(%s)" % " ".join(map(str, f)) for f in fl)))
     o.write(");\nmergePatchPairs ();\n")
 EOT
-    writeFile system/controlDict dictionary <<'EOT'
-application moveDynamicMesh; startFrom startTime; startTime 0; stopAt endTime;
-endTime 0.15; deltaT 0.01; writeControl timeStep; writeInterval 15;
-writeFormat ascii; writePrecision 17; timeFormat general; timePrecision 6;
-EOT
-    writeFile system/fvSchemes dictionary <<'EOT'
-ddtSchemes { default Euler; } gradSchemes { default Gauss linear; }
-divSchemes { default none; } laplacianSchemes { default Gauss linear corrected; }
-interpolationSchemes { default linear; } snGradSchemes { default corrected; }
-EOT
-    writeFile system/fvSolution dictionary <<'EOT'
-solvers {}
-EOT
+    write_motionControls .
+    foamDictionary system/controlDict -entry endTime -set 0.15 > /dev/null
+    foamDictionary system/controlDict -entry deltaT -set 0.01 > /dev/null
+    foamDictionary system/controlDict -entry writeInterval -set 15 > /dev/null
     python3 duct.py > log.duct 2>&1 || fail "duct.py failed: $(tail -n 3 log.duct)" || return 1
     run blockMesh || return 1
     writeFile 0/pointDisplacement pointVectorField <<'EOT'
