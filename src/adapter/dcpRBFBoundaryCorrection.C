@@ -84,7 +84,8 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
     DynamicList<label> interior(n);
     for (label i = 0; i < n; ++i)
     {
-        if (nearest[i] >= 0) interior.append(i);
+        // (beyond maxRadius no blend reaches: not kept)
+        if (nearest[i] >= 0 && distance[i] < maxRadius) interior.append(i);
     }
     std::sort
     (
