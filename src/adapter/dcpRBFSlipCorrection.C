@@ -7,8 +7,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFSlipCorrection.H"
-#include "emptyPolyPatch.H"
-#include "wedgePolyPatch.H"
+#include "basicSymmetryPointPatchField.H"
+#include "syncTools.H"
 #include "PointTree.hpp"
 
 #include <cmath>
@@ -17,23 +17,23 @@ License
 
 Foam::labelList Foam::dcpRBFSlipCorrection::slidingPatches
 (
-    const polyMesh& mesh,
+    const pointVectorField& displacement,
     const labelList& movingPatchIDs,
     const labelList& staticPatchIDs
 )
 {
-    // (the same list on every processor: processor patches are coupled)
+    // the patches in neither list whose condition lets the points slide
+    // (slip, fixedNormalSlip, symmetry, symmetryPlane); the same list on
+    // every processor (processor patches are coupled, not of these)
+    const pointVectorField::Boundary& bf = displacement.boundaryField();
     DynamicList<label> ids;
-    forAll(mesh.boundaryMesh(), patchi)
+    forAll(bf, patchi)
     {
-        const polyPatch& pp = mesh.boundaryMesh()[patchi];
         if
         (
             !movingPatchIDs.found(patchi)
          && !staticPatchIDs.found(patchi)
-         && !isA<emptyPolyPatch>(pp)
-         && !isA<wedgePolyPatch>(pp)
-         && !pp.coupled()
+         && isA<basicSymmetryPointPatchField<vector>>(bf[patchi])
         )
         {
             ids.append(patchi);
@@ -48,6 +48,7 @@ Foam::labelList Foam::dcpRBFSlipCorrection::slidingPatches
 Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
 (
     const polyMesh& mesh,
+    const pointVectorField& displacement,
     const dcpRBFPlaneProjection& projection,
     const dcpRBFBoundaryPoints& boundary,
     const labelList& movingPatchIDs,
@@ -57,9 +58,10 @@ Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
     const scalar maxRadius
 )
 :
+    mesh_(mesh),
     boundary_(boundary)
 {
-    const labelList ids(slidingPatches(mesh, movingPatchIDs, staticPatchIDs));
+    const labelList ids(slidingPatches(displacement, movingPatchIDs, staticPatchIDs));
     wallOf_.setSize(mesh.boundaryMesh().size(), -1);
     const dcprbf::Points moving(boundary.movingPoints());
     autoPtr<dcprbf::PointTree> movingTree;
@@ -169,7 +171,25 @@ Foam::scalar Foam::dcpRBFSlipCorrection::apply
     List<dcprbf::Values> changes(walls_.size());
     forAll(walls_, w)
     {
-        changes[w] = walls_[w].points->gatherLocal(walls_[w].change);
+        const labelList& local = walls_[w].points->localPoints();
+        if (Pstream::parRun())
+        {
+            // a processor holding a wall point without the wall's faces
+            // there recorded no change: the change of the one with them
+            // (the largest, as constrain()'s synchronisation takes), the
+            // same on every processor
+            pointField change(mesh_.nPoints(), Zero);
+            UIndirectList<vector>(change, local) = walls_[w].change;
+            syncTools::syncPointList
+            (
+                mesh_, change, maxMagSqrEqOp<vector>(), vector::zero
+            );
+            changes[w] = walls_[w].points->gatherLocal(vectorField(change, local));
+        }
+        else
+        {
+            changes[w] = walls_[w].points->gatherLocal(walls_[w].change);
+        }
     }
     scalar radius = 0;
     forAll(walls_, w)

@@ -14,6 +14,7 @@ License
 #include "primitivePatch.H"
 #include "PatchTools.H"
 #include "transformField.H"
+#include "syncTools.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -24,7 +25,9 @@ Foam::dcpRBFSlipPatches::dcpRBFSlipPatches
 )
 :
     slip_(displacement.boundaryField().size(), false),
-    normals0_(displacement.boundaryField().size())
+    normals0_(displacement.boundaryField().size()),
+    danglingPoints_(displacement.boundaryField().size()),
+    danglingNormals0_(displacement.boundaryField().size())
 {
     const polyMesh& mesh = displacement.mesh().mesh();
     forAll(displacement.boundaryField(), patchi)
@@ -61,6 +64,26 @@ Foam::dcpRBFSlipPatches::dcpRBFSlipPatches
         // same normal on each; collective: every rank has the same
         // non-processor patches in the same order)
         normals0_[patchi] = PatchTools::pointNormals(mesh, pp0);
+
+        // The points of the patch on other processors only: their normals
+        // from those (a processor holding a patch point without the
+        // patch's faces would keep the normal part, and the
+        // synchronisation of the displacement takes the larger value)
+        vectorField all(mesh.nPoints(), Zero);
+        UIndirectList<vector>(all, pp.meshPoints()) = normals0_[patchi];
+        syncTools::syncPointList(mesh, all, maxMagSqrEqOp<vector>(), vector::zero);
+        boolList onPatch(mesh.nPoints(), false);
+        UIndirectList<bool>(onPatch, pp.meshPoints()) = true;
+        DynamicList<label> dangling;
+        forAll(all, pointi)
+        {
+            if (!onPatch[pointi] && magSqr(all[pointi]) > 0)
+            {
+                dangling.append(pointi);
+            }
+        }
+        danglingPoints_[patchi].transfer(dangling);
+        danglingNormals0_[patchi] = vectorField(all, danglingPoints_[patchi]);
     }
 }
 
@@ -78,6 +101,16 @@ void Foam::dcpRBFSlipPatches::evaluate
     const vectorField v(pf.patchInternalField());
     const vectorField values((v + transform(I - 2.0*sqr(nHat), v))/2.0);
     pf.setInInternalField(displacement.primitiveFieldRef(), values);
+
+    // the same at the patch's points whose faces are on other processors
+    const labelList& dangling = danglingPoints_[patchi];
+    const vectorField& nDangling = danglingNormals0_[patchi];
+    vectorField& d = displacement.primitiveFieldRef();
+    forAll(dangling, i)
+    {
+        const vector u(d[dangling[i]]);
+        d[dangling[i]] = (u + transform(I - 2.0*sqr(nDangling[i]), u))/2.0;
+    }
 }
 
 

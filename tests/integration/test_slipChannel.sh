@@ -127,3 +127,14 @@ test_slipChannel_invertedWarningSuggestsPolynomialFalse() {
     grep -q "between sliding (slip) walls polynomial false" warning \
         || fail "polynomial false not suggested: $(head -c 400 warning)"
 }
+
+# On 2 processors, the manual decomposition (manualDecomposition.awk, the
+# slip walls as its "static" patches) giving a processor wall points
+# without any wall face there (triangles touching a wall at a vertex only):
+# such a processor records no change at them; the changes are synchronised
+# before they are gathered
+test_slipChannel_parallelWallPointsWithoutFacesEqualSerial() {
+    slipChannelCase "" || return 1
+    manualDecomposition 0.1 "body" "innerWall outerWall" "static" || return 1
+    parallelEqualsSerial 0.5 "$manualDecompositionDict"
+}

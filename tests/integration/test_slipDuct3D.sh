@@ -94,3 +94,4 @@ test_slipDuct3D_symmetryPlaneMeetsSlipWall() {
          END { printf "%d points: max |z| %.6f\n", n, m; exit !(n > 1000 && m <= 0.75 + 1e-12) }' \
         0.15/polyMesh/points || fail "points beyond the side walls"
 }
+
