@@ -72,12 +72,11 @@ Foam::dcpRBFSlipPatches::dcpRBFSlipPatches
         vectorField all(mesh.nPoints(), Zero);
         UIndirectList<vector>(all, pp.meshPoints()) = normals0_[patchi];
         syncTools::syncPointList(mesh, all, maxMagSqrEqOp<vector>(), vector::zero);
-        boolList onPatch(mesh.nPoints(), false);
-        UIndirectList<bool>(onPatch, pp.meshPoints()) = true;
+        const Map<label>& onPatch = pp.meshPointMap();
         DynamicList<label> dangling;
         forAll(all, pointi)
         {
-            if (!onPatch[pointi] && magSqr(all[pointi]) > 0)
+            if (magSqr(all[pointi]) > 0 && !onPatch.found(pointi))
             {
                 dangling.append(pointi);
             }
