@@ -133,8 +133,13 @@ void Foam::dcpRBFSlipCorrection::keep
 {
     if (wallOf_.size() && wallOf_[patchi] >= 0)
     {
+        // (into the storage kept: constrain() runs several times a step)
         wall& w = walls_[wallOf_[patchi]];
-        w.before = vectorField(displacement, w.points->localPoints());
+        const labelList& local = w.points->localPoints();
+        forAll(local, i)
+        {
+            w.before[i] = displacement[local[i]];
+        }
     }
 }
 
@@ -171,6 +176,12 @@ Foam::scalar Foam::dcpRBFSlipCorrection::apply
     List<dcprbf::Values> changes(walls_.size());
     forAll(walls_, w)
     {
+        // a wall whose condition changed nothing (a symmetry plane the
+        // motion runs along): no gather, no blend (one reduction)
+        if (returnReduce(max(magSqr(walls_[w].change)), maxOp<scalar>()) <= 0)
+        {
+            continue;
+        }
         const labelList& local = walls_[w].points->localPoints();
         if (Pstream::parRun())
         {
@@ -194,7 +205,10 @@ Foam::scalar Foam::dcpRBFSlipCorrection::apply
     scalar radius = 0;
     forAll(walls_, w)
     {
-        radius = max(radius, walls_[w].blend->apply(changes[w], projection, displacement));
+        if (changes[w].rows())
+        {
+            radius = max(radius, walls_[w].blend->apply(changes[w], projection, displacement));
+        }
     }
     return radius;
 }

@@ -117,7 +117,8 @@ test_slipChannel_parallelEqualsSerial() {
 
 # The whole +-20 deg with the linear polynomial: cells next to the outer wall
 # fold near the largest angle (t = 0.9-1.1); the warning names polynomial
-# false (with sliding walls and the polynomial on)
+# false (with sliding walls and the polynomial on) and staticPatches, and
+# does not suggest a larger supportRadius
 test_slipChannel_invertedWarningSuggestsPolynomialFalse() {
     slipChannelCase "" || return 1
     foamDictionary system/controlDict -entry endTime -set 1.2 > /dev/null
@@ -125,7 +126,12 @@ test_slipChannel_invertedWarningSuggestsPolynomialFalse() {
     grep -A2 "inverted or degenerate" log.moveDynamicMesh | tr '\n' ' ' > warning
     [ -s warning ] || fail "no inverted cells (the test needs them)" || return 1
     grep -q "between sliding (slip) walls polynomial false" warning \
-        || fail "polynomial false not suggested: $(head -c 400 warning)"
+        || fail "polynomial false not suggested: $(head -c 400 warning)" || return 1
+    # and staticPatches for the walls, not a larger supportRadius (which
+    # carries more of the motion out to them)
+    grep -q "list those the body does not touch under staticPatches" warning \
+        || fail "staticPatches not suggested: $(head -c 400 warning)" || return 1
+    ! grep -q "enlarge supportRadius" warning || fail "a larger supportRadius suggested with slip walls"
 }
 
 # On 2 processors, the manual decomposition (manualDecomposition.awk, the
