@@ -72,26 +72,24 @@ void Foam::dcpRBFControlPoints::greedy(const dcprbf::Values& d)
 }
 
 
-void Foam::dcpRBFControlPoints::storeState()
+void Foam::dcpRBFControlPoints::storeState(dictionary& state) const
 {
-    labelList indices(set_.indices().begin(), set_.indices().end());
-    labelList ages(set_.ages().begin(), set_.ages().end());
-    state_.set("ready", ready_);
-    state_.set("trialWait", trialWait_);
-    state_.set("trialBackoff", trialBackoff_);
-    state_.set("indices", indices);
-    state_.set("ages", ages);
+    state.set("ready", ready_);
+    state.set("trialWait", trialWait_);
+    state.set("trialBackoff", trialBackoff_);
+    state.set("indices", labelList(set_.indices().begin(), set_.indices().end()));
+    state.set("ages", labelList(set_.ages().begin(), set_.ages().end()));
     if (blendFrom_)
     {
-        state_.set("blendStep", blendStep_);
-        state_.set("blendFromIndices", labelList(blendFrom_->indices.begin(), blendFrom_->indices.end()));
-        state_.set("blendFromAges", labelList(blendFrom_->ages.begin(), blendFrom_->ages.end()));
+        state.set("blendStep", blendStep_);
+        state.set("blendFromIndices", labelList(blendFrom_->indices.begin(), blendFrom_->indices.end()));
+        state.set("blendFromAges", labelList(blendFrom_->ages.begin(), blendFrom_->ages.end()));
     }
     else
     {
-        state_.remove("blendStep");
-        state_.remove("blendFromIndices");
-        state_.remove("blendFromAges");
+        state.remove("blendStep");
+        state.remove("blendFromIndices");
+        state.remove("blendFromAges");
     }
 }
 
@@ -175,15 +173,8 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
     trialBackoff_(1),
     state_
     (
-        IOobject
-        (
-            "dcpRBFState",
-            mesh.time().timeName(),
-            "uniform",
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
-        )
+        "dcpRBFState", mesh,
+        [this](dictionary& state) { storeState(state); }
     ),
     boundaryStored_
     (
@@ -217,7 +208,6 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
             << " boundary points of movingPatches and staticPatches: "
             << e.what() << exit(FatalError);
     }
-    storeState();
 }
 
 
@@ -482,7 +472,6 @@ void Foam::dcpRBFControlPoints::endStep()
             *blendFrom_ = set_.freshState(blendFrom_->indices, blendFrom_->ages);
         }
     }
-    storeState();
 }
 
 
