@@ -176,6 +176,36 @@ void Foam::dcpRBFMotionSolver::initialise()
 {
     setThreads();
     checkPatches();
+
+    // The points finishDisplacement() can change, and the prescribed ones
+    // (std::vector: GCC's alloc-size-larger-than on a boolList of nPoints)
+    std::vector<char> mark(std::size_t(mesh().nPoints()), false);
+    DynamicList<label> prescribed;
+    for (label pointi = 0; pointi < mesh().nPoints(); ++pointi)
+    {
+        if (boundaryPoints_.kind(pointi) != dcpRBFBoundaryPoints::interiorPoint)
+        {
+            mark[pointi] = true;
+            prescribed.append(pointi);
+        }
+    }
+    boundaryMeshPoints_.transfer(prescribed);
+    for (const polyPatch& pp : mesh().boundaryMesh())
+    {
+        if (!isA<emptyPolyPatch>(pp))
+        {
+            for (const label pointi : pp.meshPoints())
+            {
+                mark[pointi] = true;
+            }
+        }
+    }
+    DynamicList<label> finished;
+    for (label pointi = 0; pointi < mesh().nPoints(); ++pointi)
+    {
+        if (mark[pointi]) finished.append(pointi);
+    }
+    finishedPoints_.transfer(finished);
     Info<< typeName << ": " << boundaryPoints_.size() << " boundary points ("
         << word(settings_.kernel().name()) << ", supportRadius "
         << settings_.kernel().radius() << ", polynomial "
@@ -218,6 +248,7 @@ void Foam::dcpRBFMotionSolver::solve()
 {
     clockTime timer;
     step_ = dcpRBFStepLog::record();
+    pointsMeasured_ = false;
     dcpRBFStepLog::record& r = step_;
 
     // 1. swapRule nearest: swaps from the quality of the mesh as it is

@@ -110,6 +110,8 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     const dcprbf::Values& d
 )
 {
+    pointsMeasured_ = false;
+
     // evaluated once per distinct point (2D: the front and back twins)
     const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
     const dcprbf::Points& x = distinct_.points();
@@ -204,6 +206,16 @@ void Foam::dcpRBFMotionSolver::finishDisplacement()
     // listed patches' rule, the same on every processor: moving points
     // where prescribed (also where a static patch's condition says
     // otherwise), static points in place
+    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    if (pointsMeasured_)
+    {
+        // the only points this can change
+        finishedBefore_.setSize(finishedPoints_.size());
+        forAll(finishedPoints_, i)
+        {
+            finishedBefore_[i] = disp[finishedPoints_[i]];
+        }
+    }
     pointDisplacement_.setUpToDate();
     pointDisplacement_.storeOldTimes();
     pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
@@ -215,28 +227,24 @@ void Foam::dcpRBFMotionSolver::finishDisplacement()
         }
     }
     constrain();
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
-    forAll(disp, pointi)
+    for (const label pointi : boundaryMeshPoints_)
     {
-        if (boundaryPoints_.kind(pointi) != dcpRBFBoundaryPoints::interiorPoint)
-        {
-            disp[pointi] = prescribed_[pointi];
-        }
+        disp[pointi] = prescribed_[pointi];
+    }
+    forAll(finishedPoints_, i)
+    {
+        // bitwise, as the measured points were made
+        pointsMeasured_ =
+            pointsMeasured_
+         && std::memcmp(&finishedBefore_[i], &disp[finishedPoints_[i]], sizeof(vector)) == 0;
     }
 }
 
 
 void Foam::dcpRBFMotionSolver::currentPoints(pointField& p) const
 {
-    // points0 + displacement (as Field's operator+), in p's storage
-    const pointField& p0 = points0();
-    const vectorField& d = pointDisplacement_.primitiveField();
-    p.setSize(p0.size());
-    forAll(p, pointi)
-    {
-        p[pointi] = p0[pointi] + d[pointi];
-    }
-    twoDPoints_.correct(p);
+    // points0 + displacement (as Field's operator+), 2D corrected
+    twoDPoints_.move(points0(), pointDisplacement_.primitiveField(), p);
 }
 
 
@@ -262,16 +270,9 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
     }
     clockTime timer;
     // the points the quality was measured on, if the displacement is the
-    // one they were made from (bitwise), else made anew. The measured ones
-    // by reference (OpenFOAM's callers copy them or read them at once)
-    const vectorField& disp = pointDisplacement_.primitiveField();
-    const bool measured =
-        lastDisplacement_.size() == disp.size()
-     && disp.size() > 0
-     && std::memcmp
-        (
-            disp.cdata(), lastDisplacement_.cdata(), disp.size()*sizeof(vector)
-        ) == 0;
+    // one they were made from, else made anew. The measured ones by
+    // reference (OpenFOAM's callers copy them or read them at once)
+    const bool measured = pointsMeasured_ && lastPoints_.size() == points0().size();
     tmp<pointField> tpoints
     (
         measured ? tmp<pointField>(lastPoints_) : curPoints()

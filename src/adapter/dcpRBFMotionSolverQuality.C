@@ -29,7 +29,7 @@ void Foam::dcpRBFMotionSolver::measureRegion(const pointField& p)
 void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
 {
     currentPoints(lastPoints_);
-    lastDisplacement_ = pointDisplacement_.primitiveField();
+    pointsMeasured_ = true;
     measureRegion(lastPoints_);
     r.nCells = lastQuality_.nCells;
     r.minQuality = lastQuality_.minQuality;
@@ -72,6 +72,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
     dcpRBFQualityRegion::rankedCell worst(lastQuality_.worst[0]);
     pointField current(lastPoints_);
     const vectorField noSwapField(pointDisplacement_.primitiveField());
+    const bool noSwapMeasured = pointsMeasured_;
     const dcpRBFStepLog::record noSwapRecord(r);
 
     // Rescue during a blend: the blend ends at once, the trials start from
@@ -135,7 +136,10 @@ void Foam::dcpRBFMotionSolver::trySwaps
     const label kept = controlPoints_.endTrials(d, !rescue);
     if (!kept && !blend.from)
     {
-        return;    // the mesh without swaps, measured in lastQuality_
+        // the mesh without swaps (every trial undone: the displacement
+        // as before them), measured in lastQuality_ and lastPoints_
+        pointsMeasured_ = noSwapMeasured;
+        return;
     }
 
     // The mesh this step writes (with swapBlendSteps > 1 the blend's first
@@ -143,7 +147,6 @@ void Foam::dcpRBFMotionSolver::trySwaps
     // swaps, or they are abandoned
     dcpRBFQualityRegion::summary noSwap(std::move(lastQuality_));
     pointField noSwapPoints(std::move(lastPoints_));
-    vectorField noSwapDisplacement(std::move(lastDisplacement_));
     if (!rescue && settings_.selection().swapBlendSteps > 1)
     {
         r.boundaryError = interpolateDisplacement(d);
@@ -163,7 +166,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
     pointDisplacement_.primitiveFieldRef() = noSwapField;
     lastQuality_ = std::move(noSwap);
     lastPoints_.transfer(noSwapPoints);
-    lastDisplacement_.transfer(noSwapDisplacement);
+    pointsMeasured_ = noSwapMeasured;
     const label nUndone = r.nUndone;
     r = noSwapRecord;
     r.nUndone = nUndone + kept;
@@ -234,7 +237,7 @@ Foam::dcpRBFMotionSolver::currentQuality()
     {
         measureRegion(p);
         lastPoints_ = p;
-        lastDisplacement_.clear();     // the mesh's points: none of ours
+        pointsMeasured_ = false;     // the mesh's points: none of ours
     }
     return lastQuality_;
 }
