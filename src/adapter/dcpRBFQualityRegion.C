@@ -12,6 +12,7 @@ License
 #include "Pstream.H"
 
 #include <algorithm>
+#include <limits>
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -167,15 +168,29 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     {
         block& b = blocks[bi];
         const label i1 = min(q.size(), (bi + 1)*blockSize);
+        // keep() only for a cell that may enter a full list: at most its
+        // last quality (lowest), at least (highest); NaN always
+        const auto bound = [&](const std::vector<label>& kept, const scalar none)
+        {
+            return label(kept.size()) < nLocal ? none : q[kept.back()];
+        };
+        constexpr scalar inf = std::numeric_limits<scalar>::infinity();
+        scalar low = bound(b.lowestAt, inf), high = bound(b.highestAt, -inf);
         for (label i = bi*blockSize; i < i1; ++i)
         {
-            b.nInverted += (q[i] <= 0);
-            b.least = min(b.least, q[i]);
-            b.sum += q[i];
-            if (nLocal > 0)
+            const scalar qi = q[i];
+            b.nInverted += (qi <= 0);
+            b.least = min(b.least, qi);
+            b.sum += qi;
+            if (nLocal > 0 && !(qi > low))
             {
                 keep(b.lowestAt, i, lower);
+                low = bound(b.lowestAt, inf);
+            }
+            if (nLocal > 0 && !(qi < high))
+            {
                 keep(b.highestAt, i, higher);
+                high = bound(b.highestAt, -inf);
             }
         }
     }
