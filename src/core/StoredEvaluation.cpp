@@ -239,7 +239,8 @@ namespace
 {
 
 //- out[0..C) = sum over the row's entries k of values[k]*a[C*inner[k] + .],
-//  in two interleaved partial sums (two independent addition chains)
+//  in four interleaved partial sums (four independent addition chains: with
+//  two, the additions' latency bounded the product, 2 cycles per entry)
 template<int C, class Index>
 inline void rowProduct
 (
@@ -251,23 +252,22 @@ inline void rowProduct
     double* out
 )
 {
-    double v0[C] = {}, v1[C] = {};
-    for (; k + 1 < end; k += 2)
+    constexpr int U = 4;
+    double v[U][C] = {};
+    for (; k + U - 1 < end; k += U)
     {
-        const double* a0 = a + C*inner[k];
-        const double* a1 = a + C*inner[k + 1];
-        for (int q = 0; q < C; ++q)
+        for (int u = 0; u < U; ++u)
         {
-            v0[q] += values[k]*a0[q];
-            v1[q] += values[k + 1]*a1[q];
+            const double* au = a + C*inner[k + u];
+            for (int q = 0; q < C; ++q) v[u][q] += values[k + u]*au[q];
         }
     }
-    if (k < end)
+    for (; k < end; ++k)
     {
         const double* a0 = a + C*inner[k];
-        for (int q = 0; q < C; ++q) v0[q] += values[k]*a0[q];
+        for (int q = 0; q < C; ++q) v[0][q] += values[k]*a0[q];
     }
-    for (int q = 0; q < C; ++q) out[q] = v0[q] + v1[q];
+    for (int q = 0; q < C; ++q) out[q] = (v[0][q] + v[1][q]) + (v[2][q] + v[3][q]);
 }
 
 
