@@ -306,7 +306,11 @@ void StoredEvaluation::product
     {
         out.noalias() = s.dense*alpha;
     }
-    #pragma omp parallel for schedule(static)
+    // threads for a product worth waking them: a short one (the boundary
+    // error at the candidates) costs microseconds, waking a sleeping
+    // thread up to a few hundred
+    const std::size_t entries = s.dense.size() ? s.dense.size() : s.values.size();
+    #pragma omp parallel for schedule(static) if(entries >= minParallelEntries)
     for (std::ptrdiff_t i = 0; i < n; ++i)
     {
         double v[3] = {0, 0, 0};

@@ -49,6 +49,9 @@ public:
     //- s(X) = K alpha + Q beta for the current centres (prepare() true)
     void evaluate(const Values& alpha, const Eigen::MatrixX3d& beta, Values& out) const;
 
+    //- Products of fewer kernel entries run on one thread
+    static constexpr std::size_t minParallelEntries = std::size_t(1) << 17;
+
     //- Bytes held
     std::size_t bytes() const;
 
