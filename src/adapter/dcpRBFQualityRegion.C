@@ -163,7 +163,7 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     constexpr label blockSize = 16384;
     const label nBlocks = (q.size() + blockSize - 1)/blockSize;
     std::vector<block> blocks(nBlocks);
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(nBlocks > 1)
     for (label bi = 0; bi < nBlocks; ++bi)
     {
         block& b = blocks[bi];

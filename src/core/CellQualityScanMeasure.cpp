@@ -181,7 +181,8 @@ void CellQualityScan::measure(const double* p, double* q, const bool wide) const
     double* const x = compact_.get();
     const std::size_t n = size();
     const long nBlocks = long((n + blockCells - 1)/blockCells);
-    #pragma omp parallel
+    // threads for a scan worth waking them (a sleeping thread takes ~0.1 ms)
+    #pragma omp parallel if(n >= minParallelCells)
     {
         #pragma omp for schedule(static)
         for (long i = 0; i < nPoints; ++i)

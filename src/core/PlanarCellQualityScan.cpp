@@ -181,7 +181,8 @@ void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide)
         compact_.reset(new double[2*pointIds_.size()]);
     }
     double* const x = compact_.get();
-    #pragma omp parallel
+    // threads for a scan worth waking them (a sleeping thread takes ~0.1 ms)
+    #pragma omp parallel if(size() >= minParallelCells)
     {
         #pragma omp for schedule(static)
         for (long i = 0; i < nPoints; ++i)

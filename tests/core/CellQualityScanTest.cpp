@@ -300,6 +300,7 @@ TEST(CellQualityScan, BitIdenticalOnOneAndTwoThreads)
     const HexBlock b(12, HexBlock::Split::mixed);
     const std::vector<double> p(deformed(b.points, 0.3, 11));
     const CellQualityScan scan(b.scan(TetQuality::Metric::sizeShape));
+    ASSERT_GE(scan.size(), CellQualityScan::minParallelCells);
     std::vector<double> q1(scan.size()), q2(scan.size());
     const int nThreads = omp_get_max_threads();
     omp_set_num_threads(1);

@@ -155,9 +155,9 @@ TEST(PlanarCellQualityScan, EqualsTheDecompositionOfThePrismsIncludingInverted)
 
 TEST(PlanarCellQualityScan, RigidMotionIsOneAndThreadsAreBitIdentical)
 {
-    // 1200 cells (600 quadrilaterals, 600 triangles): several chunks of
-    // each PlanarPolygonBatch
-    const Extrusion e(30, 0, 1, 0.1);
+    // 10800 cells (5400 quadrilaterals, 5400 triangles): several chunks of
+    // each PlanarPolygonBatch, enough for the scan to use threads
+    const Extrusion e(90, 0, 1, 0.1);
     std::vector<double> p(e.points);
     const double c = std::cos(0.7), s = std::sin(0.7);
     for (std::size_t i = 0; i < p.size()/3; ++i)
@@ -167,6 +167,7 @@ TEST(PlanarCellQualityScan, RigidMotionIsOneAndThreadsAreBitIdentical)
         p[3*i + 1] = s*x + c*y - 1;
     }
     const PlanarCellQualityScan scan(e.polygonStart, e.polygonPoints, e.points.data(), 0, 1);
+    ASSERT_GE(scan.size(), PlanarCellQualityScan::minParallelCells);
     std::vector<double> q(scan.size());
     scan.measure(p.data(), q.data());
     for (const double x : q) EXPECT_NEAR(x, 1.0, 1e-12);

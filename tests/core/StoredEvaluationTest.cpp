@@ -8,6 +8,7 @@
 #include "TestPoints.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 using namespace dcprbf;
 using test::randomPoints;
@@ -66,6 +67,28 @@ TEST_P(StoredCase, EqualsTheEvaluator)
 
 INSTANTIATE_TEST_SUITE_P(KernelsPolyDim, StoredCase, ::testing::ValuesIn(test::kernelCases()),
     test::kernelCaseName);
+
+TEST(StoredEvaluation, BitIdenticalOnOneAndTwoThreads)
+{
+    // enough kernel entries for the product to use threads
+    const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.6);
+    const LinearPolynomial frame(true, 3);
+    const Points x = randomPoints(6000, 3, 41);
+    const Points c = randomPoints(80, 3, 42);
+    StoredEvaluation s(k, frame, x);
+    ASSERT_TRUE(s.prepare(c, std::size_t(1) << 30));
+    ASSERT_GE(s.bytes()/(sizeof(double) + 2), StoredEvaluation::minParallelEntries);
+    const Values alpha = test::smoothField(c);
+    const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+    Values v1, v2;
+    const int nThreads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    s.evaluate(alpha, beta, v1);
+    omp_set_num_threads(2);
+    s.evaluate(alpha, beta, v2);
+    omp_set_num_threads(nThreads);
+    EXPECT_TRUE(v1 == v2);
+}
 
 TEST(StoredEvaluation, MoreCentresThanSixteenBitColumnsEqualTheEvaluator)
 {
