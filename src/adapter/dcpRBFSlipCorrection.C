@@ -9,6 +9,8 @@ License
 #include "dcpRBFSlipCorrection.H"
 #include "basicSymmetryPointPatchField.H"
 #include "syncTools.H"
+#include "primitivePatch.H"
+#include "unitConversion.H"
 #include "PointTree.hpp"
 
 #include <cmath>
@@ -43,6 +45,82 @@ Foam::labelList Foam::dcpRBFSlipCorrection::slidingPatches
 }
 
 
+Foam::List<Foam::labelList> Foam::dcpRBFSlipCorrection::walls
+(
+    const polyMesh& mesh,
+    const labelList& ids,
+    const pointField& points0
+)
+{
+    // Per sliding patch its reference point normals at every mesh point
+    // (zero off the patch), summed over the processors holding its faces:
+    // a processor holding a point of a patch without the patch's faces
+    // sees it too
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    List<vectorField> normals(ids.size());
+    forAll(ids, a)
+    {
+        const polyPatch& pp = patches[ids[a]];
+        const primitivePatch p0
+        (
+            SubList<face>(mesh.faces(), pp.size(), pp.start()), points0
+        );
+        normals[a].setSize(mesh.nPoints(), Zero);
+        UIndirectList<vector>(normals[a], p0.meshPoints()) = p0.pointNormals();
+        syncTools::syncPointList(mesh, normals[a], plusEqOp<vector>(), vector::zero);
+    }
+
+    // per sliding patch its wall (the first patch of the wall): patches
+    // sharing a point whose normals agree there, on every processor
+    const scalar cosMax = std::cos(degToRad(sameWallAngle));
+    labelList wallOf(ids);
+    forAll(ids, a)
+    {
+        for (label b = a + 1; b < ids.size(); ++b)
+        {
+            bool shared = false, parallel = true;
+            forAll(normals[a], pointi)
+            {
+                const vector& na = normals[a][pointi];
+                const vector& nb = normals[b][pointi];
+                if (magSqr(na) > 0 && magSqr(nb) > 0)
+                {
+                    shared = true;
+                    parallel = parallel && (na & nb) > cosMax*mag(na)*mag(nb);
+                }
+            }
+            if
+            (
+                returnReduce(shared, orOp<bool>())
+             && returnReduce(parallel, andOp<bool>())
+            )
+            {
+                // b's wall joins a's
+                const label from = wallOf[b], to = wallOf[a];
+                for (label& w : wallOf)
+                {
+                    if (w == from) w = to;
+                }
+            }
+        }
+    }
+    List<labelList> result;
+    forAll(ids, a)
+    {
+        if (wallOf[a] == ids[a])
+        {
+            labelList wall;
+            forAll(ids, b)
+            {
+                if (wallOf[b] == ids[a]) wall.append(ids[b]);
+            }
+            result.append(wall);
+        }
+    }
+    return result;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
@@ -63,21 +141,22 @@ Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
 {
     const labelList ids(slidingPatches(displacement, movingPatchIDs, staticPatchIDs));
     wallOf_.setSize(mesh.boundaryMesh().size(), -1);
+    placeOf_.setSize(mesh.boundaryMesh().size(), -1);
     const dcprbf::Points moving(boundary.movingPoints());
     autoPtr<dcprbf::PointTree> movingTree;
     if (moving.rows())
     {
         movingTree.reset(new dcprbf::PointTree(moving));
     }
-    for (const label patchi : ids)
+    for (const labelList& patchIDs : walls(mesh, ids, points0))
     {
-        // the patch's points as the "moving" points of a set of their own
+        // the wall's points as the "moving" points of a set of their own
         // (the same patches on every processor: the same sets)
         autoPtr<dcpRBFBoundaryPoints> points
         (
             new dcpRBFBoundaryPoints
             (
-                mesh, projection, labelList(1, patchi), labelList(), points0
+                mesh, projection, patchIDs, labelList(), points0
             )
         );
         if (points->size() == 0)
@@ -113,11 +192,23 @@ Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
         (
             new dcpRBFBoundaryCorrection(evalPoints, x, corrected, maxRadius, radius)
         );
-        w->patchi = patchi;
+        w->patches = patchIDs;
+        w->members.setSize(patchIDs.size());
+        forAll(patchIDs, k)
+        {
+            const Map<label>& onPatch = mesh.boundaryMesh()[patchIDs[k]].meshPointMap();
+            DynamicList<label> members;
+            forAll(points->localPoints(), i)
+            {
+                if (onPatch.found(points->localPoints()[i])) members.append(i);
+            }
+            w->members[k].transfer(members);
+            wallOf_[patchIDs[k]] = walls_.size();
+            placeOf_[patchIDs[k]] = k;
+        }
         w->before.setSize(points->localPoints().size(), Zero);
         w->change.setSize(points->localPoints().size(), Zero);
         w->points = std::move(points);
-        wallOf_[patchi] = walls_.size();
         walls_.append(w);
     }
 }
@@ -133,10 +224,15 @@ void Foam::dcpRBFSlipCorrection::keep
 {
     if (wallOf_.size() && wallOf_[patchi] >= 0)
     {
-        // (into the storage kept: constrain() runs several times a step)
+        // (into the storage kept: constrain() runs several times a step;
+        // the wall's first patch starts its change anew)
         wall& w = walls_[wallOf_[patchi]];
         const labelList& local = w.points->localPoints();
-        forAll(local, i)
+        if (placeOf_[patchi] == 0)
+        {
+            w.change = Zero;
+        }
+        for (const label i : w.members[placeOf_[patchi]])
         {
             w.before[i] = displacement[local[i]];
         }
@@ -152,14 +248,15 @@ void Foam::dcpRBFSlipCorrection::record
 {
     if (wallOf_.size() && wallOf_[patchi] >= 0)
     {
+        // added up over the wall's patches (their shared points)
         wall& w = walls_[wallOf_[patchi]];
         const labelList& local = w.points->localPoints();
-        forAll(local, i)
+        for (const label i : w.members[placeOf_[patchi]])
         {
-            w.change[i] =
-                boundary_.kind(local[i]) == dcpRBFBoundaryPoints::interiorPoint
-              ? displacement[local[i]] - w.before[i]
-              : Zero;
+            if (boundary_.kind(local[i]) == dcpRBFBoundaryPoints::interiorPoint)
+            {
+                w.change[i] += displacement[local[i]] - w.before[i];
+            }
         }
     }
 }
