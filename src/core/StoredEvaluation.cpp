@@ -204,22 +204,48 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
     // the new centres' columns, alone
     const double R2 = kernel_.compact() ? kernel_.radius()*kernel_.radius() : -1;
     std::size_t bytes = s.bytes() + slots_[1 - k].bytes() + p.column.size()*sizeof(int);
+    const std::ptrdiff_t n = x_.rows();
+    std::vector<double> column(n);
+    std::vector<char> within(n);
     for (const int j : p.centre)
     {
-        std::vector<int> rows;
-        std::vector<double> values;
+        // a column the current patch has (a trial swap after another): kept
+        const Patch& old = patch_;
+        std::size_t e = 0;
+        while (e < old.centre.size() && old.centres.row(old.centre[e]) != c.row(j)) ++e;
+        if (e < old.centre.size())
+        {
+            bytes += old.rows[e].size()*(sizeof(int) + sizeof(double));
+            if (bytes > budget)
+            {
+                return false;
+            }
+            p.rows.push_back(old.rows[e]);
+            p.values.push_back(old.values[e]);
+            continue;
+        }
+        // else the kernel at every point within R (threads), then those
+        // entries in ascending rows
         kernel_.visit([&](const auto& phi)
         {
-            for (Eigen::Index i = 0; i < x_.rows(); ++i)
+            #pragma omp parallel for schedule(static) if(n >= minParallelRows)
+            for (std::ptrdiff_t i = 0; i < n; ++i)
             {
                 const double d2 = (x_.row(i) - c.row(j)).squaredNorm();
-                if (R2 < 0 || d2 < R2)
-                {
-                    rows.push_back(int(i));
-                    values.push_back(phi.ofSquared(d2));
-                }
+                within[i] = R2 < 0 || d2 < R2;
+                column[i] = within[i] ? phi.ofSquared(d2) : 0.0;
             }
         });
+        std::vector<int> rows;
+        std::vector<double> values;
+        for (std::ptrdiff_t i = 0; i < n; ++i)
+        {
+            if (within[i])
+            {
+                rows.push_back(int(i));
+                values.push_back(column[i]);
+            }
+        }
         bytes += rows.size()*(sizeof(int) + sizeof(double));
         if (bytes > budget)
         {
@@ -374,10 +400,13 @@ void StoredEvaluation::evaluate
     }
     for (std::size_t e = 0; e < patch_.centre.size(); ++e)
     {
+        // a column's rows are distinct: threads for a long one
         const auto aj = alpha.row(patch_.centre[e]);
         const std::vector<int>& rows = patch_.rows[e];
         const std::vector<double>& values = patch_.values[e];
-        for (std::size_t k = 0; k < rows.size(); ++k)
+        const std::ptrdiff_t nk = std::ptrdiff_t(rows.size());
+        #pragma omp parallel for schedule(static) if(nk >= minParallelRows)
+        for (std::ptrdiff_t k = 0; k < nk; ++k)
         {
             out.row(rows[k]) += values[k]*aj;
         }

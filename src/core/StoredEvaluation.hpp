@@ -49,8 +49,10 @@ public:
     //- s(X) = K alpha + Q beta for the current centres (prepare() true)
     void evaluate(const Values& alpha, const Eigen::MatrixX3d& beta, Values& out) const;
 
-    //- Products of fewer kernel entries run on one thread
+    //- Products of fewer kernel entries, patch columns of fewer rows run
+    //  on one thread
     static constexpr std::size_t minParallelEntries = std::size_t(1) << 17;
+    static constexpr std::ptrdiff_t minParallelRows = 8192;
 
     //- Bytes held
     std::size_t bytes() const;
