@@ -117,7 +117,12 @@ Foam::scalar Foam::dcpRBFBoundaryCorrection::apply
         return 0;
     }
     const dcprbf::kernels::WendlandC2 phi{1.0/R};
-    for (label k = 0; k < point_.size() && distance_[k] < R; ++k)
+    // the points within R (ascending distance); each point once: threads
+    // for many
+    const label kEnd =
+        label(std::lower_bound(distance_.begin(), distance_.end(), R) - distance_.begin());
+    #pragma omp parallel for schedule(static) if(kEnd >= minParallelPoints)
+    for (label k = 0; k < kEnd; ++k)
     {
         const label b = nearest_[k];
         const scalar weight =
