@@ -231,12 +231,11 @@ void Foam::dcpRBFMotionSolver::finishDisplacement()
     {
         disp[pointi] = prescribed_[pointi];
     }
-    forAll(finishedPoints_, i)
+    for (label i = 0; pointsMeasured_ && i < finishedPoints_.size(); ++i)
     {
         // bitwise, as the measured points were made
         pointsMeasured_ =
-            pointsMeasured_
-         && std::memcmp(&finishedBefore_[i], &disp[finishedPoints_[i]], sizeof(vector)) == 0;
+            std::memcmp(&finishedBefore_[i], &disp[finishedPoints_[i]], sizeof(vector)) == 0;
     }
 }
 

@@ -172,7 +172,7 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
         // last quality (lowest), at least (highest); NaN always
         const auto bound = [&](const std::vector<label>& kept, const scalar none)
         {
-            return label(kept.size()) < nLocal ? none : q[kept.back()];
+            return nLocal == 0 || label(kept.size()) < nLocal ? none : q[kept.back()];
         };
         constexpr scalar inf = std::numeric_limits<scalar>::infinity();
         scalar low = bound(b.lowestAt, inf), high = bound(b.highestAt, -inf);

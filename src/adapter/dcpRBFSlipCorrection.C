@@ -56,8 +56,10 @@ Foam::List<Foam::labelList> Foam::dcpRBFSlipCorrection::walls
     // (zero off the patch), summed over the processors holding its faces:
     // a processor holding a point of a patch without the patch's faces
     // sees it too
+    // (kept per patch for its points only: one field of every point at
+    // a time)
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
-    List<vectorField> normals(ids.size());
+    List<Map<vector>> normals(ids.size());
     forAll(ids, a)
     {
         const polyPatch& pp = patches[ids[a]];
@@ -65,9 +67,13 @@ Foam::List<Foam::labelList> Foam::dcpRBFSlipCorrection::walls
         (
             SubList<face>(mesh.faces(), pp.size(), pp.start()), points0
         );
-        normals[a].setSize(mesh.nPoints(), Zero);
-        UIndirectList<vector>(normals[a], p0.meshPoints()) = p0.pointNormals();
-        syncTools::syncPointList(mesh, normals[a], plusEqOp<vector>(), vector::zero);
+        vectorField n(mesh.nPoints(), Zero);
+        UIndirectList<vector>(n, p0.meshPoints()) = p0.pointNormals();
+        syncTools::syncPointList(mesh, n, plusEqOp<vector>(), vector::zero);
+        forAll(n, pointi)
+        {
+            if (magSqr(n[pointi]) > 0) normals[a].insert(pointi, n[pointi]);
+        }
     }
 
     // per sliding patch its wall (the first patch of the wall): patches
@@ -79,12 +85,13 @@ Foam::List<Foam::labelList> Foam::dcpRBFSlipCorrection::walls
         for (label b = a + 1; b < ids.size(); ++b)
         {
             bool shared = false, parallel = true;
-            forAll(normals[a], pointi)
+            forAllConstIters(normals[a], iter)
             {
-                const vector& na = normals[a][pointi];
-                const vector& nb = normals[b][pointi];
-                if (magSqr(na) > 0 && magSqr(nb) > 0)
+                const auto other = normals[b].cfind(iter.key());
+                if (other.found())
                 {
+                    const vector& na = iter.val();
+                    const vector& nb = *other;
                     shared = true;
                     parallel = parallel && (na & nb) > cosMax*mag(na)*mag(nb);
                 }

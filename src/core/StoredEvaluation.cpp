@@ -205,8 +205,8 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
     const double R2 = kernel_.compact() ? kernel_.radius()*kernel_.radius() : -1;
     std::size_t bytes = s.bytes() + slots_[1 - k].bytes() + p.column.size()*sizeof(int);
     const std::ptrdiff_t n = x_.rows();
-    std::vector<double> column(n);
-    std::vector<char> within(n);
+    std::vector<double> column;
+    std::vector<char> within;
     for (const int j : p.centre)
     {
         // a column the current patch has (a trial swap after another): kept
@@ -226,6 +226,8 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
         }
         // else the kernel at every point within R (threads), then those
         // entries in ascending rows
+        column.resize(n);
+        within.resize(n);
         kernel_.visit([&](const auto& phi)
         {
             #pragma omp parallel for schedule(static) if(n >= minParallelRows)
