@@ -213,6 +213,25 @@ Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
             wallOf_[patchIDs[k]] = walls_.size();
             placeOf_[patchIDs[k]] = k;
         }
+        if (patchIDs.size() > 1)
+        {
+            // the points on two or more of the wall's patches (synchronised)
+            labelField onPatches(mesh.nPoints(), 0);
+            for (const label patchi : patchIDs)
+            {
+                labelField on(mesh.nPoints(), 0);
+                UIndirectList<label>(on, mesh.boundaryMesh()[patchi].meshPoints()) = 1;
+                syncTools::syncPointList(mesh, on, maxEqOp<label>(), label(0));
+                onPatches += on;
+            }
+            DynamicList<label> seams;
+            forAll(points->localPoints(), i)
+            {
+                if (onPatches[points->localPoints()[i]] > 1) seams.append(i);
+            }
+            w->seams.transfer(seams);
+            w->seamBefore.setSize(w->seams.size(), Zero);
+        }
         w->before.setSize(points->localPoints().size(), Zero);
         w->change.setSize(points->localPoints().size(), Zero);
         w->points = std::move(points);
@@ -238,6 +257,10 @@ void Foam::dcpRBFSlipCorrection::keep
         if (placeOf_[patchi] == 0)
         {
             w.change = Zero;
+            forAll(w.seams, k)
+            {
+                w.seamBefore[k] = displacement[local[w.seams[k]]];
+            }
         }
         for (const label i : w.members[placeOf_[patchi]])
         {
@@ -280,13 +303,24 @@ Foam::scalar Foam::dcpRBFSlipCorrection::apply
     List<dcprbf::Values> changes(walls_.size());
     forAll(walls_, w)
     {
+        const labelList& local = walls_[w].points->localPoints();
+        // the seam points' change: the constrained displacement minus the
+        // one before the wall's conditions
+        vectorField ownChange(walls_[w].change);
+        forAll(walls_[w].seams, k)
+        {
+            const label i = walls_[w].seams[k];
+            if (boundary_.kind(local[i]) == dcpRBFBoundaryPoints::interiorPoint)
+            {
+                ownChange[i] = displacement[local[i]] - walls_[w].seamBefore[k];
+            }
+        }
         // a wall whose condition changed nothing (a symmetry plane the
         // motion runs along): no gather, no blend (one reduction)
-        if (returnReduce(max(magSqr(walls_[w].change)), maxOp<scalar>()) <= 0)
+        if (returnReduce(max(magSqr(ownChange)), maxOp<scalar>()) <= 0)
         {
             continue;
         }
-        const labelList& local = walls_[w].points->localPoints();
         if (Pstream::parRun())
         {
             // a processor holding a wall point without the wall's faces
@@ -294,7 +328,7 @@ Foam::scalar Foam::dcpRBFSlipCorrection::apply
             // (the largest, as constrain()'s synchronisation takes), the
             // same on every processor
             pointField change(mesh_.nPoints(), Zero);
-            UIndirectList<vector>(change, local) = walls_[w].change;
+            UIndirectList<vector>(change, local) = ownChange;
             syncTools::syncPointList
             (
                 mesh_, change, maxMagSqrEqOp<vector>(), vector::zero
@@ -303,7 +337,7 @@ Foam::scalar Foam::dcpRBFSlipCorrection::apply
         }
         else
         {
-            changes[w] = walls_[w].points->gatherLocal(walls_[w].change);
+            changes[w] = walls_[w].points->gatherLocal(ownChange);
         }
     }
     scalar radius = 0;
