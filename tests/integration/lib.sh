@@ -24,6 +24,17 @@ runTest() {
 # fail MESSAGE: print and return 1
 fail() { echo "$*"; return 1; }
 
+# pointsAgree A B MAXREL WHAT: the largest difference between the point
+# files A and B (comparePoints.awk: relative to A's bounding-box diagonal) is
+# at most MAXREL; prints it
+pointsAgree() {
+    local diff
+    diff=$(awk -f "$here/comparePoints.awk" "$1" "$2") || fail "$diff" || return 1
+    echo "$4: max difference, relative, points: $diff"
+    awk -v r="$(echo "$diff" | cut -d' ' -f2)" -v m="$3" 'BEGIN { exit !(r <= m) }' \
+        || fail "$4 differ: $diff"
+}
+
 # run APP ARGS...: run an OpenFOAM application, log to log.APP[.n]
 run() {
     local log="log.$1"

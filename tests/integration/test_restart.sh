@@ -39,12 +39,8 @@ EOT
         [ "$np" -eq 1 ] || run reconstructPar -time 1 || exit 1
     ) || fail "restarted run failed (see restart/log.*)" || return 1
     [ "$np" -eq 1 ] || run reconstructPar -time 1 || return 1
-    local diff
-    diff=$(awk -f "$here/comparePoints.awk" 1/polyMesh/points restart/1/polyMesh/points) \
-        || fail "$diff" || return 1
-    echo "uninterrupted vs restarted at t = 1 ($np processors): $diff"
-    awk -v r="$(echo "$diff" | cut -d' ' -f2)" 'BEGIN { exit !(r <= 1e-14) }' \
-        || fail "restart differs: $diff"
+    pointsAgree 1/polyMesh/points restart/1/polyMesh/points 1e-14 \
+        "uninterrupted vs restarted at t = 1 ($np processors)"
 }
 
 # restartEveryMode NP SETUP: restartEqualsUninterrupted for all, greedy and
