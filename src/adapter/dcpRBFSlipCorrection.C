@@ -7,126 +7,10 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFSlipCorrection.H"
-#include "basicSymmetryPointPatchField.H"
 #include "syncTools.H"
-#include "primitivePatch.H"
-#include "unitConversion.H"
 #include "PointTree.hpp"
 
 #include <cmath>
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::labelList Foam::dcpRBFSlipCorrection::slidingPatches
-(
-    const pointVectorField& displacement,
-    const labelList& movingPatchIDs,
-    const labelList& staticPatchIDs
-)
-{
-    // the patches in neither list whose condition lets the points slide
-    // (slip, fixedNormalSlip, symmetry, symmetryPlane); the same list on
-    // every processor (processor patches are coupled, not of these)
-    const pointVectorField::Boundary& bf = displacement.boundaryField();
-    DynamicList<label> ids;
-    forAll(bf, patchi)
-    {
-        if
-        (
-            !movingPatchIDs.found(patchi)
-         && !staticPatchIDs.found(patchi)
-         && isA<basicSymmetryPointPatchField<vector>>(bf[patchi])
-        )
-        {
-            ids.append(patchi);
-        }
-    }
-    return labelList(std::move(ids));
-}
-
-
-Foam::List<Foam::labelList> Foam::dcpRBFSlipCorrection::walls
-(
-    const polyMesh& mesh,
-    const labelList& ids,
-    const pointField& points0
-)
-{
-    // Per sliding patch its reference point normals at every mesh point
-    // (zero off the patch), summed over the processors holding its faces:
-    // a processor holding a point of a patch without the patch's faces
-    // sees it too
-    // (kept per patch for its points only: one field of every point at
-    // a time)
-    const polyBoundaryMesh& patches = mesh.boundaryMesh();
-    List<Map<vector>> normals(ids.size());
-    forAll(ids, a)
-    {
-        const polyPatch& pp = patches[ids[a]];
-        const primitivePatch p0
-        (
-            SubList<face>(mesh.faces(), pp.size(), pp.start()), points0
-        );
-        vectorField n(mesh.nPoints(), Zero);
-        UIndirectList<vector>(n, p0.meshPoints()) = p0.pointNormals();
-        syncTools::syncPointList(mesh, n, plusEqOp<vector>(), vector::zero);
-        forAll(n, pointi)
-        {
-            if (magSqr(n[pointi]) > 0) normals[a].insert(pointi, n[pointi]);
-        }
-    }
-
-    // per sliding patch its wall (the first patch of the wall): patches
-    // sharing a point whose normals agree there, on every processor
-    const scalar cosMax = std::cos(degToRad(sameWallAngle));
-    labelList wallOf(ids);
-    forAll(ids, a)
-    {
-        for (label b = a + 1; b < ids.size(); ++b)
-        {
-            bool shared = false, parallel = true;
-            forAllConstIters(normals[a], iter)
-            {
-                const auto other = normals[b].cfind(iter.key());
-                if (other.found())
-                {
-                    const vector& na = iter.val();
-                    const vector& nb = *other;
-                    shared = true;
-                    parallel = parallel && (na & nb) > cosMax*mag(na)*mag(nb);
-                }
-            }
-            if
-            (
-                returnReduce(shared, orOp<bool>())
-             && returnReduce(parallel, andOp<bool>())
-            )
-            {
-                // b's wall joins a's
-                const label from = wallOf[b], to = wallOf[a];
-                for (label& w : wallOf)
-                {
-                    if (w == from) w = to;
-                }
-            }
-        }
-    }
-    List<labelList> result;
-    forAll(ids, a)
-    {
-        if (wallOf[a] == ids[a])
-        {
-            labelList wall;
-            forAll(ids, b)
-            {
-                if (wallOf[b] == ids[a]) wall.append(ids[b]);
-            }
-            result.append(wall);
-        }
-    }
-    return result;
-}
-
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -146,7 +30,10 @@ Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
     mesh_(mesh),
     boundary_(boundary)
 {
-    const labelList ids(slidingPatches(displacement, movingPatchIDs, staticPatchIDs));
+    const dcpRBFSlidingWalls walls
+    (
+        mesh, displacement, movingPatchIDs, staticPatchIDs, points0
+    );
     wallOf_.setSize(mesh.boundaryMesh().size(), -1);
     placeOf_.setSize(mesh.boundaryMesh().size(), -1);
     const dcprbf::Points moving(boundary.movingPoints());
@@ -155,8 +42,9 @@ Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
     {
         movingTree.reset(new dcprbf::PointTree(moving));
     }
-    for (const labelList& patchIDs : walls(mesh, ids, points0))
+    forAll(walls, wi)
     {
+        const labelList& patchIDs = walls.patches(wi);
         // the wall's points as the "moving" points of a set of their own
         // (the same patches on every processor: the same sets)
         autoPtr<dcpRBFBoundaryPoints> points
@@ -213,25 +101,13 @@ Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
             wallOf_[patchIDs[k]] = walls_.size();
             placeOf_[patchIDs[k]] = k;
         }
-        if (patchIDs.size() > 1)
+        DynamicList<label> seams;
+        forAll(points->localPoints(), i)
         {
-            // the points on two or more of the wall's patches (synchronised)
-            labelField onPatches(mesh.nPoints(), 0);
-            for (const label patchi : patchIDs)
-            {
-                labelField on(mesh.nPoints(), 0);
-                UIndirectList<label>(on, mesh.boundaryMesh()[patchi].meshPoints()) = 1;
-                syncTools::syncPointList(mesh, on, maxEqOp<label>(), label(0));
-                onPatches += on;
-            }
-            DynamicList<label> seams;
-            forAll(points->localPoints(), i)
-            {
-                if (onPatches[points->localPoints()[i]] > 1) seams.append(i);
-            }
-            w->seams.transfer(seams);
-            w->seamBefore.setSize(w->seams.size(), Zero);
+            if (walls.onSeam(wi, points->localPoints()[i])) seams.append(i);
         }
+        w->seams.transfer(seams);
+        w->seamBefore.setSize(w->seams.size(), Zero);
         w->before.setSize(points->localPoints().size(), Zero);
         w->change.setSize(points->localPoints().size(), Zero);
         w->points = std::move(points);
