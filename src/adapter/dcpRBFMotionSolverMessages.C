@@ -35,6 +35,16 @@ Foam::string Foam::dcpRBFMotionSolver::guardShortfall(const label iter) const
           : ": try another supportRadius or function"
         )
       + (
+            slipCorrection_.active()
+          ? string
+            (
+                "; sliding (slip) walls near the body: a larger radius carries"
+                " more of the motion out to them, list those the body does not"
+                " touch under staticPatches or set polynomial false"
+            )
+          : string()
+        )
+      + (
             rotation_.active()
           ? ")"
           : "; for large rotations rotationInterpolation true)"
@@ -50,7 +60,13 @@ Foam::string Foam::dcpRBFMotionSolver::guardShortfall(const label iter) const
       : iter >= settings_.guardIterations()
       ? " (guardIterations " + Foam::name(settings_.guardIterations())
         + "; where more points do not raise the minimum, raise"
-          " supportRadius)"
+          " supportRadius"
+        + (
+              slipCorrection_.active()
+            ? " or, with sliding walls near the body, list them under"
+              " staticPatches)"
+            : ")"
+          )
       : ""
     );
 }
@@ -71,8 +87,9 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) cons
               + (settings_.qualityFloor() > 0 ? "" : ", set a qualityFloor (e.g. 0.2)")
               + (
                     slipCorrection_.active() && settings_.polynomial()
-                  ? ", for a body rotating between sliding (slip) walls polynomial"
-                    " false (the linear part carries its rotation out to them)"
+                  ? ", with sliding (slip) walls polynomial false (the linear"
+                    " part carries the body's rotation or translation out to"
+                    " them)"
                   : ""
                 )
               + " or, for large rotations, rotationInterpolation true."

@@ -198,7 +198,13 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
             bb.add(points0, mesh.boundaryMesh()[patchi].meshPoints());
         }
         bb.reduce();
-        radius = factor*bb.mag();
+        // in the plane of a 2D mesh (not the extrusion's thickness)
+        vector span(bb.span());
+        for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
+        {
+            if (mesh.geometricD()[cmpt] == -1) span[cmpt] = 0;
+        }
+        radius = factor*mag(span);
     }
     if (!(radius > 0))
     {

@@ -131,7 +131,7 @@ test_slipChannel_invertedWarningSuggestsPolynomialFalse() {
     run moveDynamicMesh || return 1
     grep -A2 "inverted or degenerate" log.moveDynamicMesh | tr '\n' ' ' > warning
     [ -s warning ] || fail "no inverted cells (the test needs them)" || return 1
-    grep -q "between sliding (slip) walls polynomial false" warning \
+    grep -q "with sliding (slip) walls polynomial false" warning \
         || fail "polynomial false not suggested: $(head -c 400 warning)" || return 1
     # and staticPatches for the walls, not a larger supportRadius (which
     # carries more of the motion out to them)

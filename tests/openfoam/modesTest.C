@@ -147,8 +147,10 @@ TEST(Modes, SupportRadiusRelativeToTheMovingExtent)
     );
     autoPtr<motionSolver> ms(select(c));
     const auto& solver = refCast<dcpRBFMotionSolver>(ms());
-    // bottom patch: x in [0, 1], y = 0, z in [0, 0.1]
-    EXPECT_NEAR(solver.settings().kernel().radius(), 2*Foam::sqrt(1 + 0.01), 1e-12);
+    // bottom patch: x in [0, 1], y = 0, z in [0, 0.1]; a 2D mesh (z
+    // empty): the extent in its plane, not the extrusion's thickness
+    ASSERT_EQ(c.mesh().nGeometricD(), 2);
+    EXPECT_NEAR(solver.settings().kernel().radius(), 2.0, 1e-12);
 }
 
 } // namespace
