@@ -49,6 +49,10 @@ void RbfEvaluator::assign
           + std::to_string(polynomial_.size())
         );
     }
+    // the same centres (new weights for the same set, every step): the
+    // tree of the centres kept
+    const bool sameCentres =
+        tree_ && centres_.rows() == centres.rows() && centres_ == centres;
     centres_ = centres;
     alpha_ = alpha;
     beta_ = beta;
@@ -60,7 +64,10 @@ void RbfEvaluator::assign
     ay_ = alpha.col(1);
     az_ = alpha.col(2);
     const std::size_t n = centres.rows();
-    tree_.reset(kernel_.compact() && n > 0 ? new PointTree(centres_) : nullptr);
+    if (!sameCentres)
+    {
+        tree_.reset(kernel_.compact() && n > 0 ? new PointTree(centres_) : nullptr);
+    }
 }
 
 

@@ -59,6 +59,29 @@ TEST_P(EvaluatorCase, AllMethodsEqualBruteForce)
     EXPECT_GT(ref.cwiseAbs().maxCoeff(), 1e-3);
 }
 
+TEST_P(EvaluatorCase, ReassignedCentresEqualBruteForce)
+{
+    // new weights for the same centres (the tree kept), then as many
+    // centres moved (a new tree): the tree method as brute force each time
+    RbfEvaluator e = make(300, test::testRadius(name(), 0.2));
+    const Points x = randomPoints(400, dim(), 24, 1.2);
+    e.setMethod(RbfEvaluator::Method::Tree);
+    const auto check = [&](const char* what)
+    {
+        Values ref(x.rows(), 3);
+        e.evaluateBruteForce(x.data(), x.rows(), ref.data());
+        EXPECT_LT(test::relDiff(e.evaluate(x), ref), 1e-12) << what;
+        EXPECT_GT(ref.cwiseAbs().maxCoeff(), 1e-3) << what;
+    };
+    Points c = e.centres();
+    const Eigen::MatrixX3d beta = e.polynomialCoeffs();
+    e.assign(c, Values::Random(c.rows(), 3), beta);
+    check("same centres");
+    c = randomPoints(300, dim(), 25);
+    e.assign(c, Values::Random(c.rows(), 3), beta);
+    check("moved centres");
+}
+
 TEST_P(EvaluatorCase, AutoPicksTreeOnlyForSmallCompactSupport)
 {
     const RbfEvaluator small = make(500, 0.1);
