@@ -200,3 +200,16 @@ test_slipChannel_splitWallParallelEqualsSerial() {
     slipChannelCase "" || return 1
     parallelEqualsSerial 0.5
 }
+
+# The guard's shortfall with sliding walls: its advice names staticPatches
+# for them, not only a larger supportRadius (a new user's trial: a larger
+# radius carries more of the motion out to sliding walls)
+test_slipChannel_guardShortfallNamesStaticPatches() {
+    slipChannelCase "qualityFloor 0.99; guardIterations 1;" || return 1
+    foamDictionary system/controlDict -entry endTime -set 0.1 > /dev/null
+    run moveDynamicMesh || return 1
+    grep -A3 "below qualityFloor" log.moveDynamicMesh | tr '\n' ' ' > warning
+    [ -s warning ] || fail "the floor was met (the test needs it unmet)" || return 1
+    grep -q "guardIterations 1; where more points do not raise the minimum, raise supportRadius or, with sliding walls near the body, list them under staticPatches" warning \
+        || fail "no staticPatches advice: $(head -c 500 warning)"
+}
