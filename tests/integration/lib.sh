@@ -24,6 +24,14 @@ runTest() {
 # fail MESSAGE: print and return 1
 fail() { echo "$*"; return 1; }
 
+# warningText START LINES WHY: the warning of log.moveDynamicMesh starting
+# with START (and its next LINES lines) on one line in the file warning;
+# fails with WHY when there is none
+warningText() {
+    grep -A"$2" "$1" log.moveDynamicMesh | tr '\n' ' ' > warning
+    [ -s warning ] || fail "$3"
+}
+
 # pointsAgree A B MAXREL WHAT: the largest difference between the point
 # files A and B (comparePoints.awk: relative to A's bounding-box diagonal) is
 # at most MAXREL; prints it

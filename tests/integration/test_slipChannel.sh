@@ -129,8 +129,7 @@ test_slipChannel_invertedWarningSuggestsPolynomialFalse() {
     slipChannelCase "" || return 1
     foamDictionary system/controlDict -entry endTime -set 1.2 > /dev/null
     run moveDynamicMesh || return 1
-    grep -A2 "inverted or degenerate" log.moveDynamicMesh | tr '\n' ' ' > warning
-    [ -s warning ] || fail "no inverted cells (the test needs them)" || return 1
+    warningText "inverted or degenerate" 2 "no inverted cells (the test needs them)" || return 1
     grep -q "with sliding (slip) walls polynomial false" warning \
         || fail "polynomial false not suggested: $(head -c 400 warning)" || return 1
     # and staticPatches for the walls, not a larger supportRadius (which
@@ -208,8 +207,7 @@ test_slipChannel_guardShortfallNamesStaticPatches() {
     slipChannelCase "qualityFloor 0.99; guardIterations 1;" || return 1
     foamDictionary system/controlDict -entry endTime -set 0.1 > /dev/null
     run moveDynamicMesh || return 1
-    grep -A3 "below qualityFloor" log.moveDynamicMesh | tr '\n' ' ' > warning
-    [ -s warning ] || fail "the floor was met (the test needs it unmet)" || return 1
+    warningText "below qualityFloor" 3 "the floor was met (the test needs it unmet)" || return 1
     grep -q "guardIterations 1; where more points do not raise the minimum, raise supportRadius or, with sliding walls near the body, list them under staticPatches" warning \
         || fail "no staticPatches advice: $(head -c 500 warning)"
 }
