@@ -67,7 +67,7 @@ public:
 
     //- Quality of every cell for the points p (x y z per point, indexed
     //  as the reference points) into q (wide false: the SIMD kernels'
-    //  default-target build even where AVX2 is there; the same values;
+    //  default-target build even with AVX2 or AVX-512; the same values;
     //  not to be called concurrently on one scan: a scratch copy of the
     //  points is kept)
     void measure(const double* p, double* q, bool wide = true) const;

@@ -48,7 +48,7 @@ public:
     }
 
     //- J, |A|_F^2 and the rank key of every map (wide false: the
-    //  default-target build even where AVX2 is there; the same values)
+    //  default-target build even with AVX2 or AVX-512; the same values)
     void measure(TetQuality::Metric metric, bool wide = true);
 
     double J(const std::size_t t) const { return lanes_.out(0, t); }

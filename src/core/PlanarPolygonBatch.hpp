@@ -57,7 +57,7 @@ public:
     //  x (x y per point). Called by every thread of an OpenMP parallel
     //  region (the cells shared among them; the values do not depend on
     //  the number of threads) or outside one. wide false: the
-    //  default-target build even where AVX2 is there; the same values
+    //  default-target build even with AVX2 or AVX-512; the same values
     void measure(const double* x, double* q, TetQuality::Metric metric, bool wide) const;
 
 private:

@@ -59,7 +59,7 @@ public:
     }
 
     //- The worst tetrahedron of every prism
-    //  (wide false: the default-target build even where AVX2 is there;
+    //  (wide false: the default-target build even with AVX2 or AVX-512;
     //  the values are the same)
     void measure(TetQuality::Metric metric, bool wide = true);
 

@@ -60,7 +60,19 @@ static DCPRBF_ALWAYS_INLINE void run
 
 bool TetBatch::wideAvailable()
 {
-    return tetKernel::hasAvx2();
+    return tetKernel::widest() > 0;
+}
+
+
+unsigned TetBatch::width()
+{
+    return tetKernel::widest();
+}
+
+
+void TetBatch::limitWidth(const unsigned bits)
+{
+    tetKernel::widthLimit() = bits;
 }
 
 

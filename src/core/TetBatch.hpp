@@ -53,13 +53,20 @@ public:
         }
     }
 
-    //- Is there an AVX2 build of the SIMD kernels on this processor (else
-    //  wide and narrow are the same build)?
+    //- Is there an AVX2 or AVX-512 build of the SIMD kernels on this
+    //  processor, within the cap (else wide and narrow are the same build)?
     static bool wideAvailable();
 
+    //- The vector width in bits the wide kernels run at (512, 256 or 0)
+    static unsigned width();
+
+    //- Cap the wide kernels' width at bits (512: no cap; 256: AVX2 where
+    //  the processor has AVX-512; process-wide, for tests and benchmarks)
+    static void limitWidth(unsigned bits);
+
     //- J, |A|_F^2 and the rank key of every tetrahedron
-    //  (wide false: the default-target build even where AVX2 is there;
-    //  the values are the same)
+    //  (wide false: the default-target build even with AVX2 or AVX-512
+    //  is there; the values are the same)
     void measure(TetQuality::Metric metric, bool wide = true);
 
     //- q[i] = TetMeasures::quality(J[i], a2[i], metric) (to ~1e-15) for

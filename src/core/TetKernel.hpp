@@ -19,9 +19,10 @@
 // either build.
 //
 // dispatch<Kernel> runs Kernel::run<M> (M: the metric as a template
-// argument) compiled for AVX2 where the processor has it (GCC on x86-64;
-// a target attribute, not target_clones, which GCC 12 fails to compile on
-// these loops), else for the default target.
+// argument) compiled for AVX-512 (512-bit vectors: 8 lanes) or AVX2 where
+// the processor has them (GCC on x86-64; target attributes, not
+// target_clones, which GCC 12 fails to compile on these loops), else for
+// the default target.
 #pragma once
 
 #include "TetQuality.hpp"
@@ -226,6 +227,15 @@ __attribute__((target("avx2"))) void byMetricAvx2
 {
     byMetric<Kernel>(metric, args...);
 }
+template<class Kernel, class... Args>
+__attribute__((target("avx512f,avx512dq,avx512vl,prefer-vector-width=512"))) void byMetricAvx512
+(
+    const TetQuality::Metric metric,
+    Args... args
+)
+{
+    byMetric<Kernel>(metric, args...);
+}
 #endif
 
 template<class Kernel, class... Args>
@@ -234,19 +244,47 @@ void byMetricDefault(const TetQuality::Metric metric, Args... args)
     byMetric<Kernel>(metric, args...);
 }
 
-//- Has the processor AVX2 (and is this a build that can use it)?
-inline bool hasAvx2()
+//- The widest vectors the processor offers the kernels, in bits: 512
+//  (AVX-512 F, DQ and VL), 256 (AVX2) or 0 (none: the default target's
+//  build; also where this compiler cannot build the others)
+inline unsigned processorWidth()
 {
     #if DCPRBF_AVX2
-    static const bool has = []{ __builtin_cpu_init(); return __builtin_cpu_supports("avx2") != 0; }();
-    return has;
+    static const unsigned w = []
+    {
+        __builtin_cpu_init();
+        if
+        (
+            __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq")
+         && __builtin_cpu_supports("avx512vl")
+        )
+        {
+            return 512u;
+        }
+        return __builtin_cpu_supports("avx2") ? 256u : 0u;
+    }();
+    return w;
     #else
-    return false;
+    return 0;
     #endif
 }
 
-//- Kernel::run<metric>(args): the AVX2 build if wide and the processor has
-//  it, else the default one (the same values: no contraction)
+//- The cap on the width the kernels use (process-wide; tests and
+//  benchmarks lower it to run the narrower builds)
+inline unsigned& widthLimit()
+{
+    static unsigned limit = 512;
+    return limit;
+}
+
+//- The width the wide kernels run at: the processor's, capped
+inline unsigned widest()
+{
+    return processorWidth() < widthLimit() ? processorWidth() : widthLimit();
+}
+
+//- Kernel::run<metric>(args): if wide, the AVX-512 or AVX2 build as
+//  widest() says, else the default one (the same values: no contraction)
 template<class Kernel, class... Args>
 void dispatch(const TetQuality::Metric metric, const bool wide, Args... args)
 {
@@ -259,7 +297,12 @@ void dispatch(const TetQuality::Metric metric, const bool wide, Args... args)
     // kernels use no x87)
     const unsigned csr = _mm_getcsr();
     _mm_setcsr(csr | 0x1F80u);
-    if (wide && hasAvx2())
+    const unsigned width = wide ? widest() : 0;
+    if (width >= 512)
+    {
+        byMetricAvx512<Kernel>(metric, args...);
+    }
+    else if (width >= 256)
     {
         byMetricAvx2<Kernel>(metric, args...);
     }

@@ -3,6 +3,7 @@
 // TetQuality::compute on the same decomposition, whatever the thread count.
 #include "CellQualityScan.hpp"
 #include "TetBatch.hpp"
+#include "SimdWidths.hpp"
 #include "TetMeasures.hpp"
 
 #include <gtest/gtest.h>
@@ -430,11 +431,11 @@ TEST(CellQualityScan, MixedCellsEachInItsPlace)
 
 TEST(CellQualityScan, SimdBuildsBitIdentical)
 {
-    // the AVX2 build (where the processor has it) and the default one: no
-    // contraction, the same values to the last bit
+    // the AVX-512 and AVX2 builds (where the processor has them) and the
+    // default one: no contraction, the same values to the last bit
     if (!TetBatch::wideAvailable())
     {
-        GTEST_SKIP() << "no AVX2 build on this processor: one build only";
+        GTEST_SKIP() << "no AVX2 or AVX-512 build on this processor: one build only";
     }
     const HexBlock b(8, HexBlock::Split::mixed);
     const std::vector<double> p(deformed(b.points, 0.3, 21));
@@ -442,10 +443,14 @@ TEST(CellQualityScan, SimdBuildsBitIdentical)
                          TetQuality::Metric::shape})
     {
         const CellQualityScan scan(b.scan(m));
-        std::vector<double> wide(scan.size()), narrow(scan.size());
-        scan.measure(p.data(), wide.data(), true);
+        std::vector<double> narrow(scan.size());
         scan.measure(p.data(), narrow.data(), false);
-        EXPECT_EQ(wide, narrow);
+        test::atEachSimdWidth([&](unsigned bits)
+        {
+            std::vector<double> wide(scan.size());
+            scan.measure(p.data(), wide.data(), true);
+            EXPECT_EQ(wide, narrow) << bits << " bits";
+        });
     }
 }
 

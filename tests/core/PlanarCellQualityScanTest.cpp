@@ -6,6 +6,7 @@
 #include "PlanarCellQualityScan.hpp"
 #include "PlanarMapBatch.hpp"
 #include "TetBatch.hpp"
+#include "SimdWidths.hpp"
 #include "TetMeasures.hpp"
 #include "WorstBatch.hpp"
 
@@ -186,18 +187,23 @@ TEST(PlanarCellQualityScan, RigidMotionIsOneAndThreadsAreBitIdentical)
 
 TEST(PlanarCellQualityScan, SimdBuildsBitIdentical)
 {
-    // the AVX2 and the default build of the SIMD kernels: the same bits
+    // the AVX-512, the AVX2 and the default build of the SIMD kernels:
+    // the same bits
     if (!TetBatch::wideAvailable())
     {
-        GTEST_SKIP() << "no AVX2 build on this processor: one build only";
+        GTEST_SKIP() << "no AVX2 or AVX-512 build on this processor: one build only";
     }
     const Extrusion e(10, 0, 1, 0.1);
     const PlanarCellQualityScan scan(e.polygonStart, e.polygonPoints, e.points.data(), 0, 1);
     const std::vector<double> d(e.moved(0.3, 9));
-    std::vector<double> wide(scan.size()), narrow(scan.size());
-    scan.measure(d.data(), wide.data(), true);
+    std::vector<double> narrow(scan.size());
     scan.measure(d.data(), narrow.data(), false);
-    EXPECT_EQ(wide, narrow);
+    test::atEachSimdWidth([&](unsigned bits)
+    {
+        std::vector<double> wide(scan.size());
+        scan.measure(d.data(), wide.data(), true);
+        EXPECT_EQ(wide, narrow) << bits << " bits";
+    });
 }
 
 

@@ -2,6 +2,7 @@
 // Unit tests of the SIMD qualities: TetMeasures::quality over the whole
 // ranked range, the same on the AVX2 and the default build.
 #include "TetBatch.hpp"
+#include "SimdWidths.hpp"
 #include "TetMeasures.hpp"
 #include "WorstBatch.hpp"
 
@@ -29,13 +30,15 @@ TEST(TetBatch, QualitiesEqualTetMeasuresOverTheRankedRange)
                          TetQuality::Metric::shape})
     {
         std::vector<double> wide(J.size()), narrow(J.size());
-        TetBatch::qualities(J.size(), J.data(), a2.data(), wide.data(), m, true);
         TetBatch::qualities(J.size(), J.data(), a2.data(), narrow.data(), m, false);
-        if (TetBatch::wideAvailable())
+        // the AVX-512, the AVX2 and the default build: the same bits
+        test::atEachSimdWidth([&](unsigned bits)
         {
-            // the AVX2 and the default build: the same bits
-            EXPECT_EQ(wide, narrow);
-        }
+            std::vector<double> w(J.size());
+            TetBatch::qualities(J.size(), J.data(), a2.data(), w.data(), m, true);
+            EXPECT_EQ(w, narrow) << bits << " bits";
+        });
+        TetBatch::qualities(J.size(), J.data(), a2.data(), wide.data(), m, true);
         for (std::size_t i = 0; i < J.size(); ++i)
         {
             const double ref = TetMeasures::quality(J[i], a2[i], m);
