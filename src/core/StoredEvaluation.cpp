@@ -2,6 +2,7 @@
 #include "StoredEvaluation.hpp"
 #include "PointTree.hpp"
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <numeric>
@@ -11,8 +12,9 @@ namespace dcprbf
 
 std::size_t StoredEvaluation::Slot::bytes() const
 {
-    return outer.size()*sizeof(std::size_t) + inner.size()*sizeof(std::uint16_t)
-        + inner32.size()*sizeof(int) + values.size()*sizeof(double)
+    return outer.size()*sizeof(std::size_t) + inner8.size()
+        + inner.size()*sizeof(std::uint16_t) + inner32.size()*sizeof(int)
+        + values.size()*sizeof(double)
         + dense.size()*sizeof(double);
 }
 
@@ -27,7 +29,8 @@ StoredEvaluation::StoredEvaluation
     kernel_(kernel),
     polynomial_(polynomial),
     x_(x),
-    basis_(polynomial.basis(x))
+    // Q(x) but its column of ones (8 bytes a row fewer to stream)
+    basis_(polynomial.basis(x).rightCols(std::max(0, polynomial.size() - 1)))
 {}
 
 
@@ -66,14 +69,16 @@ bool StoredEvaluation::build(const Points& c, std::size_t budget, Slot& s) const
         }
         std::partial_sum(count.begin(), count.end(), count.begin());
         const std::size_t nnz = count.back();
-        const bool narrow = c.rows() <= 65536;
-        const std::size_t indexBytes = narrow ? sizeof(std::uint16_t) : sizeof(int);
+        // columns in 8 bits up to 256 centres, 16 up to 65536, else 32
+        const int indexBytes = c.rows() <= 256 ? 1 : c.rows() <= 65536 ? 2 : 4;
         if ((n + 1)*sizeof(std::size_t) + nnz*(indexBytes + sizeof(double)) > budget)
         {
             return false;
         }
         s.outer = std::move(count);
-        (narrow ? s.inner.resize(nnz) : s.inner32.resize(nnz));
+        s.inner8.resize(indexBytes == 1 ? nnz : 0);
+        s.inner.resize(indexBytes == 2 ? nnz : 0);
+        s.inner32.resize(indexBytes == 4 ? nnz : 0);
         s.values.resize(nnz);
         kernel_.visit([&](const auto& phi)
         {
@@ -83,7 +88,11 @@ bool StoredEvaluation::build(const Points& c, std::size_t budget, Slot& s) const
                 std::size_t k = s.outer[i];
                 tree.forEachWithin(x_.row(i).data(), R, [&](std::size_t j, double d2)
                 {
-                    if (narrow)
+                    if (indexBytes == 1)
+                    {
+                        s.inner8[k] = std::uint8_t(j);
+                    }
+                    else if (indexBytes == 2)
                     {
                         s.inner[k] = std::uint16_t(j);
                     }
@@ -319,7 +328,8 @@ void StoredEvaluation::product
 ) const
 {
     const std::ptrdiff_t n = x_.rows();
-    const int P = int(basis_.cols());
+    const int P = polynomial_.size();
+    const int L = int(basis_.cols());   // P - 1: Q's columns after the ones
     // alpha and beta with C columns, contiguous
     std::vector<double> a(C*alpha.rows()), b(C*P);
     for (Eigen::Index j = 0; j < alpha.rows(); ++j)
@@ -348,19 +358,26 @@ void StoredEvaluation::product
         }
         else
         {
-            if (s.inner32.empty())
+            const std::size_t k = s.outer[i], end = s.outer[i + 1];
+            if (!s.inner8.empty())
             {
-                rowProduct<C>(s.outer[i], s.outer[i + 1], s.values.data(), s.inner.data(), a.data(), v);
+                rowProduct<C>(k, end, s.values.data(), s.inner8.data(), a.data(), v);
+            }
+            else if (!s.inner.empty())
+            {
+                rowProduct<C>(k, end, s.values.data(), s.inner.data(), a.data(), v);
             }
             else
             {
-                rowProduct<C>(s.outer[i], s.outer[i + 1], s.values.data(), s.inner32.data(), a.data(), v);
+                rowProduct<C>(k, end, s.values.data(), s.inner32.data(), a.data(), v);
             }
         }
-        const double* qi = basis_.data() + std::ptrdiff_t(P)*i;
-        for (int p = 0; p < P; ++p)
+        // + Q(x_i) beta: the constant (times 1, exactly), then the rest
+        const double* qi = basis_.data() + std::ptrdiff_t(L)*i;
+        for (int q = 0; P > 0 && q < C; ++q) v[q] += b[q];
+        for (int p = 0; p < L; ++p)
         {
-            for (int q = 0; q < C; ++q) v[q] += qi[p]*b[C*p + q];
+            for (int q = 0; q < C; ++q) v[q] += qi[p]*b[C*(p + 1) + q];
         }
         out(i, 0) = v[0];
         out(i, 1) = v[1];

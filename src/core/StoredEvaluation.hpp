@@ -71,9 +71,11 @@ private:
     struct Slot
     {
         Points centres;
-        // compact kernels: CSR rows (outer), columns (inner: 16 bits
-        // while the centres are at most 65536, else inner32), values
+        // compact kernels: CSR rows (outer), columns (inner8: 8 bits
+        // while the centres are at most 256, inner: 16 bits up to 65536,
+        // else inner32), values
         std::vector<std::size_t> outer;
+        std::vector<std::uint8_t> inner8;
         std::vector<std::uint16_t> inner;
         std::vector<int> inner32;
         std::vector<double> values;
@@ -117,7 +119,8 @@ private:
     RadialKernel kernel_;
     LinearPolynomial polynomial_;
     Points x_;
-    // Q(x): points x polynomial size, row-major (read with each row of K)
+    // Q(x) without its first column (the ones): points x (polynomial size
+    // - 1), row-major (read with each row of K)
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> basis_;
     std::array<Slot, 2> slots_;
     int current_ = -1;

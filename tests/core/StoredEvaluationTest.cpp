@@ -77,7 +77,7 @@ TEST(StoredEvaluation, BitIdenticalOnOneAndTwoThreads)
     const Points c = randomPoints(80, 3, 42);
     StoredEvaluation s(k, frame, x);
     ASSERT_TRUE(s.prepare(c, std::size_t(1) << 30));
-    ASSERT_GE(s.bytes()/(sizeof(double) + 2), StoredEvaluation::minParallelEntries);
+    ASSERT_GE(s.bytes()/(sizeof(double) + 1), StoredEvaluation::minParallelEntries);
     const Values alpha = test::smoothField(c);
     const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
     Values v1, v2;
@@ -90,35 +90,36 @@ TEST(StoredEvaluation, BitIdenticalOnOneAndTwoThreads)
     EXPECT_TRUE(v1 == v2);
 }
 
-TEST(StoredEvaluation, MoreCentresThanSixteenBitColumnsEqualTheEvaluator)
+TEST(StoredEvaluation, ColumnsOfEightSixteenAndThirtyTwoBitsEqualTheEvaluator)
 {
-    // columns stored in 16 bits up to 65536 centres, in 32 bits beyond:
-    // both sides of the switch against the evaluator (a 16-bit column
-    // beyond it would wrap to another centre)
-    const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.08);
+    // columns stored in 8 bits up to 256 centres, in 16 up to 65536, in 32
+    // beyond: each side of each switch against the evaluator (a narrow
+    // column beyond its range would wrap to another centre)
     const LinearPolynomial frame(true, 3);
     const Points x = randomPoints(200, 3, 41);
-    for (const int n : {65536, 65600})
+    for (const int n : {256, 257, 65536, 65600})
     {
+        const double R = n > 1000 ? 0.08 : 0.5;
+        const RadialKernel k = RadialKernel::fromName("WendlandC2", R);
         const Points c = randomPoints(n, 3, 42);
         StoredEvaluation s(k, frame, x);
         ASSERT_TRUE(s.prepare(c, std::size_t(1) << 30));
         EXPECT_LT(storedVsEvaluator(s, k, frame, x, c, 3), 1e-12) << n << " centres";
-        // the bytes: per entry a value and a column of 2 bytes up to
-        // 65536 centres, of 4 beyond
+        // the bytes: per entry a value and a column of 1, 2 or 4 bytes
         std::size_t entries = 0;
         for (Eigen::Index i = 0; i < x.rows(); ++i)
         {
             for (Eigen::Index j = 0; j < c.rows(); ++j)
             {
-                entries += (x.row(i) - c.row(j)).squaredNorm() < 0.08*0.08;
+                entries += (x.row(i) - c.row(j)).squaredNorm() < R*R;
             }
         }
-        EXPECT_GT(entries, std::size_t(100)*x.rows()) << n << " centres";
+        EXPECT_GT(entries, std::size_t(n > 1000 ? 100 : 50)*x.rows()) << n << " centres";
+        const std::size_t columnBytes = n <= 256 ? 1 : n <= 65536 ? 2 : 4;
         EXPECT_EQ
         (
             s.bytes(),
-            (x.rows() + 1)*sizeof(std::size_t) + entries*(sizeof(double) + (n <= 65536 ? 2 : 4))
+            (x.rows() + 1)*sizeof(std::size_t) + entries*(sizeof(double) + columnBytes)
         ) << n << " centres";
     }
 }
