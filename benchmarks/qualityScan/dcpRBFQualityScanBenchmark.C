@@ -17,7 +17,7 @@ Description
     scan gives the same values on 1 and 2 threads. Prints one line per
     variant: median of -repeat measurements in ms.
 
-    dcpRBFQualityScanBenchmark [-case dir] [-repeat 7]
+    dcpRBFQualityScanBenchmark [-case dir] [-repeat 7] [-simdWidth 512|256|0]
 
 \*---------------------------------------------------------------------------*/
 
@@ -27,6 +27,7 @@ Description
 #include "clockTime.H"
 #include "dcpRBFCellQuality.H"
 #include "dcpRBFQualityRegion.H"
+#include "TetBatch.hpp"
 #include "dcpRBFPlaneProjection.H"
 
 #include <omp.h>
@@ -56,11 +57,18 @@ int main(int argc, char *argv[])
         "referenceRepeat", "n",
         "measurements of the cell-by-cell reference (default: repeat)"
     );
+    argList::addOption
+    (
+        "simdWidth", "bits",
+        "cap on the quality kernels' vectors: 512 (AVX-512, default), 256 (AVX2), 0 (default build)"
+    );
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createPolyMesh.H"
     const label n = args.getOrDefault<label>("repeat", 7);
     const label nRef = args.getOrDefault<label>("referenceRepeat", n);
+    dcprbf::TetBatch::limitWidth(unsigned(max(0, args.getOrDefault<label>("simdWidth", 512))));
+    Info<< "SIMD width " << label(dcprbf::TetBatch::width()) << " bits" << nl;
 
     const pointField& p0 = mesh.points();
     const boundBox bb(p0);

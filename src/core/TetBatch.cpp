@@ -70,9 +70,21 @@ unsigned TetBatch::width()
 }
 
 
+unsigned TetBatch::widthCap()
+{
+    return tetKernel::widthLimit().load(std::memory_order_relaxed);
+}
+
+
+unsigned TetBatch::widthCapOf(const char* value)
+{
+    return tetKernel::widthCapOf(value);
+}
+
+
 void TetBatch::limitWidth(const unsigned bits)
 {
-    tetKernel::widthLimit() = bits;
+    tetKernel::widthLimit().store(bits, std::memory_order_relaxed);
 }
 
 

@@ -11,9 +11,10 @@
 // overflows nor traps (else key 0: the caller ranks by the quality itself).
 // The loop has no branch and no division by zero or overflow in any lane
 // (OpenFOAM traps floating-point exceptions), so it vectorizes; on x86-64
-// with GCC it is compiled for AVX2 as well and picked at run time. No
+// with GCC it is compiled for AVX2 and AVX-512 as well and the widest the
+// processor has is picked at run time. No
 // floating-point contraction: each tetrahedron's values are the same in
-// the vector body, its remainder and either build (bit-identical results
+// the vector body, its remainder and every build (bit-identical results
 // whatever the batch or thread count).
 #pragma once
 
@@ -60,13 +61,21 @@ public:
     //- The vector width in bits the wide kernels run at (512, 256 or 0)
     static unsigned width();
 
-    //- Cap the wide kernels' width at bits (512: no cap; 256: AVX2 where
-    //  the processor has AVX-512; process-wide, for tests and benchmarks)
+    //- Cap the wide kernels' width at bits (>= 512: no cap; 256-511: AVX2
+    //  where the processor has AVX-512; < 256: the default build);
+    //  process-wide, for tests and benchmarks, not while kernels run
     static void limitWidth(unsigned bits);
 
+    //- The cap (limitWidth's last argument; at first the environment's
+    //  DCPRBF_SIMD_WIDTH, else 512)
+    static unsigned widthCap();
+
+    //- The cap a DCPRBF_SIMD_WIDTH value asks for (null: unset)
+    static unsigned widthCapOf(const char* value);
+
     //- J, |A|_F^2 and the rank key of every tetrahedron
-    //  (wide false: the default-target build even with AVX2 or AVX-512
-    //  is there; the values are the same)
+    //  (wide false: the default-target build even with AVX2 or AVX-512;
+    //  the values are the same)
     void measure(TetQuality::Metric metric, bool wide = true);
 
     //- q[i] = TetMeasures::quality(J[i], a2[i], metric) (to ~1e-15) for

@@ -27,21 +27,27 @@
 
 #include "TetQuality.hpp"
 
+#include <atomic>
 #include <cfenv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+
+#if defined(__FAST_MATH__)
+    #error "dcpRBF: the quality kernels need IEEE arithmetic (no -ffast-math / -Ofast): their builds must give the same bits"
+#endif
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
     #include <xmmintrin.h>
-    #pragma GCC optimize("no-trapping-math", "no-math-errno", "fp-contract=off")
-    #define DCPRBF_AVX2 1
+    #pragma GCC optimize("no-trapping-math", "no-math-errno", "fp-contract=off", "no-associative-math", "no-reciprocal-math")
+    #define DCPRBF_X86_DISPATCH 1
     #ifndef __NO_MATH_ERRNO__
         #pragma GCC warning "dcpRBF: compile with -fno-math-errno: else the sizeShape quality kernels are scalar"
     #endif
 #else
-    #define DCPRBF_AVX2 0
+    #define DCPRBF_X86_DISPATCH 0
 #endif
 #if defined(__GNUC__)
     #define DCPRBF_ALWAYS_INLINE inline __attribute__((always_inline))
@@ -217,7 +223,8 @@ DCPRBF_ALWAYS_INLINE void byMetric(const TetQuality::Metric metric, Args... args
     }
 }
 
-#if DCPRBF_AVX2
+#if DCPRBF_X86_DISPATCH
+//- byMetric compiled for AVX2 (256-bit vectors; no FMA: fp-contract=off)
 template<class Kernel, class... Args>
 __attribute__((target("avx2"))) void byMetricAvx2
 (
@@ -227,6 +234,9 @@ __attribute__((target("avx2"))) void byMetricAvx2
 {
     byMetric<Kernel>(metric, args...);
 }
+
+//- byMetric compiled for AVX-512 (512-bit vectors; the target enables FMA,
+//  which fp-contract=off above keeps out: the same bits as the others)
 template<class Kernel, class... Args>
 __attribute__((target("avx512f,avx512dq,avx512vl,prefer-vector-width=512"))) void byMetricAvx512
 (
@@ -249,7 +259,7 @@ void byMetricDefault(const TetQuality::Metric metric, Args... args)
 //  build; also where this compiler cannot build the others)
 inline unsigned processorWidth()
 {
-    #if DCPRBF_AVX2
+    #if DCPRBF_X86_DISPATCH
     static const unsigned w = []
     {
         __builtin_cpu_init();
@@ -269,18 +279,36 @@ inline unsigned processorWidth()
     #endif
 }
 
-//- The cap on the width the kernels use (process-wide; tests and
-//  benchmarks lower it to run the narrower builds)
-inline unsigned& widthLimit()
+//- The cap a DCPRBF_SIMD_WIDTH value asks for: its number of bits (at
+//  most 512); 512 when unset (null) or not a whole number
+inline unsigned widthCapOf(const char* value)
 {
-    static unsigned limit = 512;
+    char* end = nullptr;
+    const unsigned long w = value ? std::strtoul(value, &end, 10) : 512;
+    if (value && (end == value || *end != '\0' || *value == '-'))
+    {
+        return 512;
+    }
+    return unsigned(w < 512 ? w : 512);
+}
+
+//- The cap on the width the kernels use, in bits: at first the
+//  environment's DCPRBF_SIMD_WIDTH (e.g. 256: AVX2 on a processor whose
+//  clock drops under 512-bit code), else 512; process-wide, tests and
+//  benchmarks lower it to run the narrower builds (not while kernels run)
+inline std::atomic<unsigned>& widthLimit()
+{
+    static std::atomic<unsigned> limit{widthCapOf(std::getenv("DCPRBF_SIMD_WIDTH"))};
     return limit;
 }
 
-//- The width the wide kernels run at: the processor's, capped
+//- The width the wide kernels run at: the widest build (512, 256 or 0)
+//  within both the processor's width and the cap
 inline unsigned widest()
 {
-    return processorWidth() < widthLimit() ? processorWidth() : widthLimit();
+    const unsigned p = processorWidth();
+    const unsigned c = widthLimit().load(std::memory_order_relaxed);
+    return c >= 512 ? p : c >= 256 ? (p < 256 ? p : 256u) : 0u;
 }
 
 //- Kernel::run<metric>(args): if wide, the AVX-512 or AVX2 build as
@@ -288,7 +316,7 @@ inline unsigned widest()
 template<class Kernel, class... Args>
 void dispatch(const TetQuality::Metric metric, const bool wide, Args... args)
 {
-    #if DCPRBF_AVX2
+    #if DCPRBF_X86_DISPATCH
     // With -fno-trapping-math GCC may move an operation ahead of a select
     // (x*x of both arms, then the select): a lane whose result is
     // discarded may then overflow. So every floating-point exception is

@@ -42,7 +42,7 @@ public:
     //- Write the qualities added since the last finish()
     void finish();
 
-    //- The AVX2 build where there is one?
+    //- The widest build (AVX-512 or AVX2) where there is one?
     bool wide() const { return wide_; }
 
 private:

@@ -1,6 +1,6 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Test helper: run a check at every wide width of the SIMD kernels this
-// processor has (AVX-512, then AVX2 under a cap), the cap lifted after.
+// processor has (AVX-512, then AVX2 under a cap); the cap as before after.
 #pragma once
 
 #include "TetBatch.hpp"
@@ -12,10 +12,25 @@ namespace dcprbf
 namespace test
 {
 
-//- f(bits) at each wide width the processor has; the widths run
+//- Restores the SIMD width cap it found, however the scope ends
+class WidthCapGuard
+{
+public:
+    WidthCapGuard() : cap_(TetBatch::widthCap()) {}
+    ~WidthCapGuard() { TetBatch::limitWidth(cap_); }
+    WidthCapGuard(const WidthCapGuard&) = delete;
+    WidthCapGuard& operator=(const WidthCapGuard&) = delete;
+
+private:
+    unsigned cap_;
+};
+
+//- f(bits) at each wide width the processor has, widest first; the widths
+//  run
 template<class F>
 std::vector<unsigned> atEachSimdWidth(F f)
 {
+    const WidthCapGuard guard;
     std::vector<unsigned> run;
     for (const unsigned bits : {512u, 256u})
     {
@@ -26,7 +41,6 @@ std::vector<unsigned> atEachSimdWidth(F f)
             run.push_back(bits);
         }
     }
-    TetBatch::limitWidth(512);
     return run;
 }
 

@@ -1,6 +1,7 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Unit tests of the SIMD qualities: TetMeasures::quality over the whole
-// ranked range, the same on the AVX2 and the default build.
+// ranked range, the same on the AVX-512, the AVX2 and the default build;
+// the width cap picks each build.
 #include "TetBatch.hpp"
 #include "SimdWidths.hpp"
 #include "TetMeasures.hpp"
@@ -8,11 +9,73 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <random>
+#include <string>
 #include <vector>
 
 using namespace dcprbf;
+
+namespace
+{
+
+//- The widest build this test's build and the processor allow, from
+//  /proc/cpuinfo's flags (GCC on x86-64 Linux: the dispatching build)
+unsigned expectedWidth()
+{
+    #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+    std::ifstream f("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(f, line))
+    {
+        if (line.rfind("flags", 0) == 0)
+        {
+            const auto has = [&](const char* flag)
+            {
+                return (line + " ").find(std::string(" ") + flag + " ") != std::string::npos;
+            };
+            return has("avx512f") && has("avx512dq") && has("avx512vl") ? 512u
+                : has("avx2") ? 256u : 0u;
+        }
+    }
+    #endif
+    return TetBatch::width();   // no flags to read: not checked
+}
+
+} // namespace
+
+
+// The processor's widest build is the one used; the cap picks each build
+// (between the builds' widths: the narrower build), and restores
+TEST(TetBatch, WidthCapPicksEachBuild)
+{
+    const test::WidthCapGuard guard;
+    const unsigned widest = expectedWidth();
+    TetBatch::limitWidth(512);
+    EXPECT_EQ(TetBatch::width(), widest);
+    TetBatch::limitWidth(4096);
+    EXPECT_EQ(TetBatch::width(), widest);
+    TetBatch::limitWidth(300);
+    EXPECT_EQ(TetBatch::width(), std::min(widest, 256u));
+    TetBatch::limitWidth(256);
+    EXPECT_EQ(TetBatch::width(), std::min(widest, 256u));
+    TetBatch::limitWidth(100);
+    EXPECT_EQ(TetBatch::width(), 0u);
+    EXPECT_FALSE(TetBatch::wideAvailable());
+
+    // the environment's DCPRBF_SIMD_WIDTH, read once for the first cap
+    EXPECT_EQ(TetBatch::widthCapOf(nullptr), 512u);
+    EXPECT_EQ(TetBatch::widthCapOf("256"), 256u);
+    EXPECT_EQ(TetBatch::widthCapOf("0"), 0u);
+    EXPECT_EQ(TetBatch::widthCapOf("1024"), 512u);
+    EXPECT_EQ(TetBatch::widthCapOf("avx2"), 512u);
+    EXPECT_EQ(TetBatch::widthCapOf("256bits"), 512u);
+    EXPECT_EQ(TetBatch::widthCapOf("-1"), 512u);
+    EXPECT_EQ(TetBatch::widthCapOf(""), 512u);
+}
+
 
 TEST(TetBatch, QualitiesEqualTetMeasuresOverTheRankedRange)
 {
