@@ -72,18 +72,33 @@ Foam::string Foam::dcpRBFMotionSolver::guardShortfall(const label iter) const
 }
 
 
+bool Foam::dcpRBFMotionSolver::inFull(label& count)
+{
+    return count++ % warningRepeat == 0;
+}
+
+
 void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) const
 {
-    if (lastQuality_.nInverted)
+    if (!lastQuality_.nInverted)
     {
-        // what else could help, from what is not set already
+        invertedSteps_ = 0;
+        return;
+    }
+    if (inFull(invertedSteps_))
+    {
+        // what else could help, from what is not set already: dynamic
+        // control points only where greedy ones stop short of the boundary
+        // points (all of them: exact there already)
         string hint;
         if (!rotation_.active())
         {
-            const bool dynamic =
-                settings_.selection().selection == dcpRBFSelectionSettings::mode::dynamic;
+            const auto mode = settings_.selection().selection;
+            const bool suggestDynamic =
+                mode == dcpRBFSelectionSettings::mode::greedy
+             && controlPoints_.size() < controlPoints_.candidates().rows();
             hint =
-                string(dynamic ? "" : ", use selection dynamic")
+                string(suggestDynamic ? ", use selection dynamic" : "")
               + (settings_.qualityFloor() > 0 ? "" : ", set a qualityFloor (e.g. 0.2)")
               + (
                     slipCorrection_.active() && settings_.polynomial()
@@ -116,8 +131,45 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) cons
                    " the walls)"
                  : "reduce the motion per step, enlarge supportRadius"
                )
-            << hint.c_str() << endl;
+            << hint.c_str()
+            << (
+                   invertedSteps_ > 1
+                 ? " (Inverted cells for " + Foam::name(invertedSteps_ - 1)
+                   + " steps in a row: this warning in full every "
+                   + Foam::name(warningRepeat) + " steps, each step's dcpRBF"
+                     " line counts them.)"
+                 : string()
+               ).c_str()
+            << endl;
     }
+}
+
+
+void Foam::dcpRBFMotionSolver::warnLowQuality(const dcpRBFStepLog::record& r) const
+{
+    if
+    (
+        lowQualityWarned_ || settings_.qualityFloor() > 0
+     || !(r.minQuality < lowQuality && r.minQuality > 0)
+    )
+    {
+        return;
+    }
+    lowQualityWarned_ = true;
+    WarningInFunction
+        << "Time " << mesh().time().timeName() << ": the minimum cell quality"
+        << " fell to " << r.minQuality << " (1: as the reference mesh's"
+        << " cells; said once). The motion is squeezing cells: enlarge"
+        << " supportRadius (several times the largest displacement), set a"
+        << " qualityFloor (e.g. " << lowQuality << ": control points are"
+        << " then added where the cells suffer)"
+        << (
+               settings_.selection().selection
+            == dcpRBFSelectionSettings::mode::greedy
+             ? ", use selection dynamic"
+             : ""
+           )
+        << " or reduce the motion per step." << endl;
 }
 
 

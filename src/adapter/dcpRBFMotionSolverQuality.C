@@ -187,6 +187,7 @@ void Foam::dcpRBFMotionSolver::guardQuality
 
         if (q.minQuality >= floor || q.worst.empty())
         {
+            shortfallSteps_ = 0;
             break;
         }
         if
@@ -207,11 +208,23 @@ void Foam::dcpRBFMotionSolver::guardQuality
                     << " inverted cells). Stopping (qualityFloorAction stop)."
                     << exit(FatalError);
             }
-            WarningInFunction
-                << "Time " << t << ": minimum cell quality " << q.minQuality
-                << " below qualityFloor " << floor << " after " << iter
-                << " guard additions" << why.c_str()
-                << "; continuing (qualityFloorAction warn)" << endl;
+            if (inFull(shortfallSteps_))
+            {
+                WarningInFunction
+                    << "Time " << t << ": minimum cell quality " << q.minQuality
+                    << " below qualityFloor " << floor << " after " << iter
+                    << " guard additions" << why.c_str()
+                    << "; continuing (qualityFloorAction warn; under a flow"
+                       " solver, qualityFloorAction stop ends the run here)"
+                    << (
+                           shortfallSteps_ > 1
+                         ? ". Short of the floor for " + Foam::name(shortfallSteps_ - 1)
+                           + " steps in a row: this warning in full every "
+                           + Foam::name(warningRepeat) + " steps"
+                         : string()
+                       ).c_str()
+                    << endl;
+            }
             break;
         }
         ++r.nGuard;
@@ -221,6 +234,7 @@ void Foam::dcpRBFMotionSolver::guardQuality
     }
 
     warnInverted(r);
+    warnLowQuality(r);
 }
 
 
