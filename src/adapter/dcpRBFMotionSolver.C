@@ -17,6 +17,7 @@ License
 #include "clockTime.H"
 #include "OFstream.H"
 #include "OSspecific.H"
+#include <numeric>
 
 #ifdef _OPENMP
     #include <omp.h>
@@ -190,6 +191,24 @@ void Foam::dcpRBFMotionSolver::initialise()
         }
     }
     boundaryMeshPoints_.transfer(prescribed);
+    {
+        std::vector<std::size_t>& start = interiorTargets_.start;
+        start.assign(std::size_t(distinct_.points().rows()) + 1, 0);
+        for (label pointi = 0; pointi < mesh().nPoints(); ++pointi)
+        {
+            if (!mark[pointi]) ++start[std::size_t(distinct_.of(pointi)) + 1];
+        }
+        std::partial_sum(start.begin(), start.end(), start.begin());
+        std::vector<std::size_t> next(start.begin(), start.end() - 1);
+        interiorTargets_.point.resize(start.back());
+        for (label pointi = 0; pointi < mesh().nPoints(); ++pointi)
+        {
+            if (!mark[pointi])
+            {
+                interiorTargets_.point[next[std::size_t(distinct_.of(pointi))]++] = int(pointi);
+            }
+        }
+    }
     for (const polyPatch& pp : mesh().boundaryMesh())
     {
         if (!isA<emptyPolyPatch>(pp))

@@ -105,30 +105,12 @@ void Foam::dcpRBFMotionSolver::constrainInterpolated()
 }
 
 
-Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
+void Foam::dcpRBFMotionSolver::copyValues
 (
-    const dcprbf::Values& d
-)
+    const dcprbf::Values& v,
+    vectorField& disp
+) const
 {
-    pointsMeasured_ = false;
-
-    // evaluated once per distinct point (2D: the front and back twins)
-    const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
-    const dcprbf::Points& x = distinct_.points();
-    dcprbf::Values& v = values_;
-    v.resize(x.rows(), 3);
-    const std::size_t budget = std::size_t(settings_.evaluationMemoryMB()) << 20;
-    if (stored_.prepare(s.centres(), budget))
-    {
-        // the control set's matrix is stored: one product
-        stored_.evaluate(s.weights(), s.polynomialCoeffs(), v);
-    }
-    else
-    {
-        s.evaluate(x.data(), x.rows(), v.data());
-    }
-
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
     if (rotation_.active())
     {
         forAll(disp, pointi)
@@ -172,6 +154,56 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
                 o[a2] = threeD ? c[2] : 0.0;
             }
         }
+    }
+}
+
+
+Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
+(
+    const dcprbf::Values& d
+)
+{
+    pointsMeasured_ = false;
+
+    // evaluated once per distinct point (2D: the front and back twins)
+    const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
+    const std::size_t budget = std::size_t(settings_.evaluationMemoryMB()) << 20;
+    const bool stored = stored_.prepare(s.centres(), budget);
+    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    if
+    (
+        stored && !rotation_.active() && disp.size()
+     && projection_.axis(0) == 0 && projection_.axis(1) == 1 && projection_.axis(2) == 2
+     && stored_.evaluateInto
+        (
+            s.weights(), s.polynomialCoeffs(), interiorTargets_, projection_.dim(),
+            &disp[0][0]
+        )
+    )
+    {
+        // the control set's matrix is stored, the core's axes are the
+        // mesh's: one product written straight to the interior points
+        // (in 2D to both twins of a distinct point), then the prescribed
+        for (const label pointi : boundaryMeshPoints_)
+        {
+            disp[pointi] = prescribed_[pointi];
+        }
+    }
+    else
+    {
+        const dcprbf::Points& x = distinct_.points();
+        dcprbf::Values& v = values_;
+        v.resize(x.rows(), 3);
+        if (stored)
+        {
+            // the control set's matrix is stored: one product
+            stored_.evaluate(s.weights(), s.polynomialCoeffs(), v);
+        }
+        else
+        {
+            s.evaluate(x.data(), x.rows(), v.data());
+        }
+        copyValues(v, disp);
     }
 
     // Error at the boundary points, blended into the volume

@@ -324,7 +324,8 @@ void StoredEvaluation::product
     const Slot& s,
     const Values& alpha,
     const Eigen::MatrixX3d& beta,
-    Values& out
+    Values& out,
+    const Scatter* scatter
 ) const
 {
     const std::ptrdiff_t n = x_.rows();
@@ -379,10 +380,50 @@ void StoredEvaluation::product
         {
             for (int q = 0; q < C; ++q) v[q] += qi[p]*b[C*(p + 1) + q];
         }
-        out(i, 0) = v[0];
-        out(i, 1) = v[1];
-        out(i, 2) = v[2];
+        if (scatter)
+        {
+            const Targets& t = scatter->targets;
+            for (std::size_t k = t.start[i]; k < t.start[i + 1]; ++k)
+            {
+                double* o = scatter->out + 3*std::size_t(t.point[k]);
+                for (int q = 0; q < 3; ++q) o[q] = q < scatter->components ? v[q] : 0.0;
+            }
+        }
+        else
+        {
+            out(i, 0) = v[0];
+            out(i, 1) = v[1];
+            out(i, 2) = v[2];
+        }
     }
+}
+
+
+bool StoredEvaluation::evaluateInto
+(
+    const Values& alpha,
+    const Eigen::MatrixX3d& beta,
+    const Targets& targets,
+    const int components,
+    double* out
+) const
+{
+    if (patch_.base >= 0 || current_ < 0 || slots_[current_].dense.size())
+    {
+        return false;
+    }
+    const Slot& s = slots_[current_];
+    const Scatter scatter{targets, components, out};
+    Values unused;
+    if (activeColumns(alpha, beta) == 2)
+    {
+        product<2>(s, alpha, beta, unused, &scatter);
+    }
+    else
+    {
+        product<3>(s, alpha, beta, unused, &scatter);
+    }
+    return true;
 }
 
 

@@ -49,6 +49,29 @@ public:
     //- s(X) = K alpha + Q beta for the current centres (prepare() true)
     void evaluate(const Values& alpha, const Eigen::MatrixX3d& beta, Values& out) const;
 
+    //- Where evaluateInto() writes each row: row i's value to the
+    //  3-vectors at out + 3 t for t in point[start[i] .. start[i + 1])
+    //  (e.g. a 2D mesh's front and back points of a distinct row)
+    struct Targets
+    {
+        std::vector<std::size_t> start;
+        std::vector<int> point;
+    };
+
+    //- evaluate()'s values written straight to their targets in out (the
+    //  first `components` of each, the others 0; nothing else written):
+    //  no pass over the rows after the product. For a stored sparse
+    //  matrix without patch columns (every step of an unchanged set);
+    //  false, nothing written, otherwise
+    bool evaluateInto
+    (
+        const Values& alpha,
+        const Eigen::MatrixX3d& beta,
+        const Targets& targets,
+        int components,
+        double* out
+    ) const;
+
     //- Products of fewer kernel entries, patch columns of fewer rows run
     //  on one thread
     static constexpr std::size_t minParallelEntries = std::size_t(1) << 17;
@@ -105,15 +128,25 @@ private:
     //  it would take more than budget bytes
     bool patch(int k, const Points& centres, std::size_t budget);
 
+    //- Where a product's rows go instead of out (evaluateInto)
+    struct Scatter
+    {
+        const Targets& targets;
+        int components;
+        double* out;
+    };
+
     //- out = K alpha + Q beta for slot s, the first C columns (the others
-    //  zero); out sized
+    //  zero); out sized. With a scatter, the rows to its targets instead
+    //  (a sparse slot)
     template<int C>
     void product
     (
         const Slot& s,
         const Values& alpha,
         const Eigen::MatrixX3d& beta,
-        Values& out
+        Values& out,
+        const Scatter* scatter = nullptr
     ) const;
 
     RadialKernel kernel_;

@@ -1,7 +1,7 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // Unit tests of StoredEvaluation: the stored product equals the evaluator for
 // every kernel, polynomial and dimension; sets are reused, not rebuilt; the
-// memory budget is kept.
+// memory budget is kept; the values written straight to their targets.
 #include "StoredEvaluation.hpp"
 #include "RbfEvaluator.hpp"
 #include "KernelCases.hpp"
@@ -9,6 +9,10 @@
 
 #include <gtest/gtest.h>
 #include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 using namespace dcprbf;
 using test::randomPoints;
@@ -154,6 +158,78 @@ TEST(StoredEvaluation, ReusesTheTwoLastSetsAndKeepsTheBudget)
     EXPECT_TRUE(small.prepare(a, budget));
     EXPECT_EQ(small.attempts(), 2);
     EXPECT_EQ(small.builds(), 1);
+}
+
+// evaluateInto writes each row's value, bit for bit evaluate()'s, to each of
+// its targets (none, one or several), the components beyond those asked
+// zero, nothing else; it refuses (writes nothing) a patched set and a
+// global kernel's dense matrix
+TEST(StoredEvaluation, EvaluateIntoWritesEachRowToItsTargets)
+{
+    const LinearPolynomial frame(true, 3);
+    const Points x = randomPoints(300, 3, 51);
+    const Points c = randomPoints(40, 3, 52);
+    const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.5);
+    StoredEvaluation s(k, frame, x);
+    ASSERT_TRUE(s.prepare(c, std::size_t(1) << 30));
+    const Values alpha = test::smoothField(c);
+    const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+    Values rows;
+    s.evaluate(alpha, beta, rows);
+
+    // row i to points 2i and 2i + 1 (even i), to 3i mod 1000 (i = 1 mod 4),
+    // to none (the others); 1000 points, some untouched
+    StoredEvaluation::Targets t;
+    t.start.push_back(0);
+    for (Eigen::Index i = 0; i < x.rows(); ++i)
+    {
+        if (i % 2 == 0) { t.point.push_back(int(2*i)); t.point.push_back(int(2*i + 1)); }
+        else if (i % 4 == 1) { t.point.push_back(int((3*i) % 1000)); }
+        t.start.push_back(t.point.size());
+    }
+    const double sentinel = std::numeric_limits<double>::quiet_NaN();
+    for (const int components : {3, 2})
+    {
+        std::vector<double> out(3*1000, sentinel);
+        ASSERT_TRUE(s.evaluateInto(alpha, beta, t, components, out.data()));
+        std::vector<bool> written(1000, false);
+        for (Eigen::Index i = 0; i < x.rows(); ++i)
+        {
+            for (std::size_t e = t.start[i]; e < t.start[i + 1]; ++e)
+            {
+                const int p = t.point[e];
+                written[p] = true;
+                for (int q = 0; q < 3; ++q)
+                {
+                    EXPECT_EQ(out[3*p + q], q < components ? rows(i, q) : 0.0)
+                        << "row " << i << " point " << p << " component " << q;
+                }
+            }
+        }
+        int untouched = 0;
+        for (int p = 0; p < 1000; ++p)
+        {
+            if (!written[p])
+            {
+                ++untouched;
+                EXPECT_TRUE(std::isnan(out[3*p]) && std::isnan(out[3*p + 2])) << "point " << p;
+            }
+        }
+        EXPECT_GT(untouched, 100);
+    }
+
+    // a patched set, a dense matrix: refused, nothing written
+    Points moved = c;
+    moved.row(3) << 0.5, 0.5, 0.5;
+    ASSERT_TRUE(s.prepare(moved, std::size_t(1) << 30));
+    ASSERT_EQ(s.patchColumns(), 1);
+    std::vector<double> out(3*1000, 7.0);
+    EXPECT_FALSE(s.evaluateInto(alpha, beta, t, 3, out.data()));
+    const RadialKernel g = RadialKernel::fromName("Gaussian", 0.5);
+    StoredEvaluation dense(g, frame, x);
+    ASSERT_TRUE(dense.prepare(c, std::size_t(1) << 30));
+    EXPECT_FALSE(dense.evaluateInto(alpha, beta, t, 3, out.data()));
+    EXPECT_TRUE(std::all_of(out.begin(), out.end(), [](double v) { return v == 7.0; }));
 }
 
 // A set that differs from the stored one by swaps, additions or removals is
