@@ -408,22 +408,63 @@ bool StoredEvaluation::evaluateInto
     double* out
 ) const
 {
-    if (patch_.base >= 0 || current_ < 0 || slots_[current_].dense.size())
+    if (current_ < 0 && patch_.base < 0)
     {
         return false;
     }
-    const Slot& s = slots_[current_];
+    const Slot& s = slots_[patch_.base < 0 ? current_ : patch_.base];
+    if (s.dense.size())
+    {
+        return false;
+    }
+    const Values a = patch_.base < 0 ? Values() : slotWeights(s, alpha);
+    const Values& as = patch_.base < 0 ? alpha : a;
     const Scatter scatter{targets, components, out};
     Values unused;
     if (activeColumns(alpha, beta) == 2)
     {
-        product<2>(s, alpha, beta, unused, &scatter);
+        product<2>(s, as, beta, unused, &scatter);
     }
     else
     {
-        product<3>(s, alpha, beta, unused, &scatter);
+        product<3>(s, as, beta, unused, &scatter);
+    }
+    // the patch's columns, added to each target of their rows as
+    // evaluate() adds them to the rows (the same order: the same bits)
+    for (std::size_t e = 0; e < patch_.centre.size(); ++e)
+    {
+        const auto aj = alpha.row(patch_.centre[e]);
+        const std::vector<int>& rows = patch_.rows[e];
+        const std::vector<double>& values = patch_.values[e];
+        const std::ptrdiff_t nk = std::ptrdiff_t(rows.size());
+        #pragma omp parallel for schedule(static) if(nk >= minParallelRows)
+        for (std::ptrdiff_t k = 0; k < nk; ++k)
+        {
+            const std::size_t r = std::size_t(rows[k]);
+            for (std::size_t t = targets.start[r]; t < targets.start[r + 1]; ++t)
+            {
+                double* o = out + 3*std::size_t(targets.point[t]);
+                for (int q = 0; q < components; ++q) o[q] += values[k]*aj(q);
+            }
+        }
     }
     return true;
+}
+
+
+Values StoredEvaluation::slotWeights(const Slot& s, const Values& alpha) const
+{
+    // the shared centres through the stored matrix (zero for the slot's
+    // centres the set no longer has), the others alone
+    Values a = Values::Zero(s.centres.rows(), 3);
+    for (std::size_t j = 0; j < patch_.column.size(); ++j)
+    {
+        if (patch_.column[j] >= 0)
+        {
+            a.row(patch_.column[j]) = alpha.row(j);
+        }
+    }
+    return a;
 }
 
 
@@ -435,19 +476,7 @@ void StoredEvaluation::evaluate
 ) const
 {
     const Slot& s = slots_[patch_.base < 0 ? current_ : patch_.base];
-    Values a;
-    if (patch_.base >= 0)
-    {
-        // the shared centres through the stored matrix, the others alone
-        a = Values::Zero(s.centres.rows(), 3);
-        for (std::size_t j = 0; j < patch_.column.size(); ++j)
-        {
-            if (patch_.column[j] >= 0)
-            {
-                a.row(patch_.column[j]) = alpha.row(j);
-            }
-        }
-    }
+    const Values a = patch_.base < 0 ? Values() : slotWeights(s, alpha);
     const Values& as = patch_.base < 0 ? alpha : a;
     out.resize(x_.rows(), 3);
     if (activeColumns(alpha, beta) == 2)

@@ -58,11 +58,11 @@ public:
         std::vector<int> point;
     };
 
-    //- evaluate()'s values written straight to their targets in out (the
-    //  first `components` of each, the others 0; nothing else written):
-    //  no pass over the rows after the product. For a stored sparse
-    //  matrix without patch columns (every step of an unchanged set);
-    //  false, nothing written, otherwise
+    //- evaluate()'s values, bit for bit, written straight to their
+    //  targets in out (the first `components` of each, the others 0;
+    //  nothing else written): no pass over the rows after the product.
+    //  For a stored sparse matrix, patched or not; false, nothing
+    //  written, for a dense one
     bool evaluateInto
     (
         const Values& alpha,
@@ -127,6 +127,9 @@ private:
     //- Patch slot k for these centres; false if they differ too much or
     //  it would take more than budget bytes
     bool patch(int k, const Points& centres, std::size_t budget);
+
+    //- The patched set's weights alpha in slot s's columns
+    Values slotWeights(const Slot& s, const Values& alpha) const;
 
     //- Where a product's rows go instead of out (evaluateInto)
     struct Scatter

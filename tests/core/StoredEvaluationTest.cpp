@@ -162,8 +162,8 @@ TEST(StoredEvaluation, ReusesTheTwoLastSetsAndKeepsTheBudget)
 
 // evaluateInto writes each row's value, bit for bit evaluate()'s, to each of
 // its targets (none, one or several), the components beyond those asked
-// zero, nothing else; it refuses (writes nothing) a patched set and a
-// global kernel's dense matrix
+// zero, nothing else; for a patched set too (its columns added at the
+// targets); it refuses (writes nothing) a global kernel's dense matrix
 TEST(StoredEvaluation, EvaluateIntoWritesEachRowToItsTargets)
 {
     const LinearPolynomial frame(true, 3);
@@ -188,43 +188,52 @@ TEST(StoredEvaluation, EvaluateIntoWritesEachRowToItsTargets)
         t.start.push_back(t.point.size());
     }
     const double sentinel = std::numeric_limits<double>::quiet_NaN();
-    for (const int components : {3, 2})
+    const auto check = [&](const Values& expected, const char* what)
     {
-        std::vector<double> out(3*1000, sentinel);
-        ASSERT_TRUE(s.evaluateInto(alpha, beta, t, components, out.data()));
-        std::vector<bool> written(1000, false);
-        for (Eigen::Index i = 0; i < x.rows(); ++i)
+        for (const int components : {3, 2})
         {
-            for (std::size_t e = t.start[i]; e < t.start[i + 1]; ++e)
+            std::vector<double> out(3*1000, sentinel);
+            ASSERT_TRUE(s.evaluateInto(alpha, beta, t, components, out.data())) << what;
+            std::vector<bool> written(1000, false);
+            for (Eigen::Index i = 0; i < x.rows(); ++i)
             {
-                const int p = t.point[e];
-                written[p] = true;
-                for (int q = 0; q < 3; ++q)
+                for (std::size_t e = t.start[i]; e < t.start[i + 1]; ++e)
                 {
-                    EXPECT_EQ(out[3*p + q], q < components ? rows(i, q) : 0.0)
-                        << "row " << i << " point " << p << " component " << q;
+                    const int p = t.point[e];
+                    written[p] = true;
+                    for (int q = 0; q < 3; ++q)
+                    {
+                        EXPECT_EQ(out[3*p + q], q < components ? expected(i, q) : 0.0)
+                            << what << ": row " << i << " point " << p << " component " << q;
+                    }
                 }
             }
-        }
-        int untouched = 0;
-        for (int p = 0; p < 1000; ++p)
-        {
-            if (!written[p])
+            int untouched = 0;
+            for (int p = 0; p < 1000; ++p)
             {
-                ++untouched;
-                EXPECT_TRUE(std::isnan(out[3*p]) && std::isnan(out[3*p + 2])) << "point " << p;
+                if (!written[p])
+                {
+                    ++untouched;
+                    EXPECT_TRUE(std::isnan(out[3*p]) && std::isnan(out[3*p + 2])) << what << ": point " << p;
+                }
             }
+            EXPECT_GT(untouched, 100) << what;
         }
-        EXPECT_GT(untouched, 100);
-    }
+    };
+    check(rows, "stored set");
 
-    // a patched set, a dense matrix: refused, nothing written
+    // a patched set: two centres moved (two patch columns)
     Points moved = c;
     moved.row(3) << 0.5, 0.5, 0.5;
+    moved.row(17) << 0.45, 0.55, 0.5;
     ASSERT_TRUE(s.prepare(moved, std::size_t(1) << 30));
-    ASSERT_EQ(s.patchColumns(), 1);
+    ASSERT_EQ(s.patchColumns(), 2);
+    Values patched;
+    s.evaluate(alpha, beta, patched);
+    check(patched, "patched set");
+
+    // a dense matrix: refused, nothing written
     std::vector<double> out(3*1000, 7.0);
-    EXPECT_FALSE(s.evaluateInto(alpha, beta, t, 3, out.data()));
     const RadialKernel g = RadialKernel::fromName("Gaussian", 0.5);
     StoredEvaluation dense(g, frame, x);
     ASSERT_TRUE(dense.prepare(c, std::size_t(1) << 30));
