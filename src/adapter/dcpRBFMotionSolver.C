@@ -17,6 +17,8 @@ License
 #include "clockTime.H"
 #include "OFstream.H"
 #include "OSspecific.H"
+#include "TetBatch.hpp"
+
 #include <numeric>
 
 #ifdef _OPENMP
@@ -137,6 +139,17 @@ void Foam::dcpRBFMotionSolver::setThreads() const
            ).c_str()
         << (fromEnv ? ")" : "; set OMP_NUM_THREADS to change)") << endl;
     #endif
+    // the quality kernels' build (the same values on any)
+    const unsigned width = dcprbf::TetBatch::width();
+    Info<< typeName << ": quality kernels in "
+        << (width >= 512 ? "AVX-512" : width >= 256 ? "AVX2" : "default")
+        << " vectors"
+        << (
+               getEnv("DCPRBF_SIMD_WIDTH").empty()
+             ? " (DCPRBF_SIMD_WIDTH=256 caps them at AVX2)"
+             : " (DCPRBF_SIMD_WIDTH " + getEnv("DCPRBF_SIMD_WIDTH") + ")"
+           ).c_str()
+        << endl;
 }
 
 

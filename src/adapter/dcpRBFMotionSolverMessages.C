@@ -78,7 +78,17 @@ bool Foam::dcpRBFMotionSolver::inFull(label& count)
 }
 
 
-void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) const
+bool Foam::dcpRBFMotionSolver::dynamicCouldHelp() const
+{
+    // greedy short of the boundary points (with all of them the
+    // interpolation is exact there already: dynamic has fewer)
+    return
+        settings_.selection().selection == dcpRBFSelectionSettings::mode::greedy
+     && controlPoints_.size() < controlPoints_.candidates().rows();
+}
+
+
+void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r)
 {
     if (!lastQuality_.nInverted)
     {
@@ -87,18 +97,12 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) cons
     }
     if (inFull(invertedSteps_))
     {
-        // what else could help, from what is not set already: dynamic
-        // control points only where greedy ones stop short of the boundary
-        // points (all of them: exact there already)
+        // what else could help, from what is not set already
         string hint;
         if (!rotation_.active())
         {
-            const auto mode = settings_.selection().selection;
-            const bool suggestDynamic =
-                mode == dcpRBFSelectionSettings::mode::greedy
-             && controlPoints_.size() < controlPoints_.candidates().rows();
             hint =
-                string(suggestDynamic ? ", use selection dynamic" : "")
+                string(dynamicCouldHelp() ? ", use selection dynamic" : "")
               + (settings_.qualityFloor() > 0 ? "" : ", set a qualityFloor (e.g. 0.2)")
               + (
                     slipCorrection_.active() && settings_.polynomial()
@@ -134,7 +138,7 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) cons
             << hint.c_str()
             << (
                    invertedSteps_ > 1
-                 ? " (Inverted cells for " + Foam::name(invertedSteps_ - 1)
+                 ? " (Inverted cells for " + Foam::name(invertedSteps_)
                    + " steps in a row: this warning in full every "
                    + Foam::name(warningRepeat) + " steps, each step's dcpRBF"
                      " line counts them.)"
@@ -145,7 +149,7 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r) cons
 }
 
 
-void Foam::dcpRBFMotionSolver::warnLowQuality(const dcpRBFStepLog::record& r) const
+void Foam::dcpRBFMotionSolver::warnLowQuality(const dcpRBFStepLog::record& r)
 {
     if
     (
@@ -163,12 +167,7 @@ void Foam::dcpRBFMotionSolver::warnLowQuality(const dcpRBFStepLog::record& r) co
         << " supportRadius (several times the largest displacement), set a"
         << " qualityFloor (e.g. " << lowQuality << ": control points are"
         << " then added where the cells suffer)"
-        << (
-               settings_.selection().selection
-            == dcpRBFSelectionSettings::mode::greedy
-             ? ", use selection dynamic"
-             : ""
-           )
+        << (dynamicCouldHelp() ? ", use selection dynamic" : "")
         << " or reduce the motion per step." << endl;
 }
 

@@ -32,6 +32,7 @@ void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
     pointsMeasured_ = true;
     measureRegion(lastPoints_);
     r.nCells = lastQuality_.nCells;
+    r.nInverted = lastQuality_.nInverted;
     r.minQuality = lastQuality_.minQuality;
     r.meanQuality = lastQuality_.meanQuality;
 }
@@ -218,7 +219,8 @@ void Foam::dcpRBFMotionSolver::guardQuality
                        " solver, qualityFloorAction stop ends the run here)"
                     << (
                            shortfallSteps_ > 1
-                         ? ". Short of the floor for " + Foam::name(shortfallSteps_ - 1)
+                         ? ". Short of the floor for "
+                           + Foam::name(shortfallSteps_)
                            + " steps in a row: this warning in full every "
                            + Foam::name(warningRepeat) + " steps"
                          : string()

@@ -68,7 +68,12 @@ void Foam::dcpRBFStepLog::write(const record& r)
     }
     line<< (r.rescue ? ", rescue" : "") << "), quality min "
         << r.minQuality << " mean " << r.meanQuality << " (" << r.nCells
-        << " cells in reach), relative boundary error " << r.boundaryError
+        << " cells in reach";
+    if (r.nInverted)
+    {
+        line<< ", " << r.nInverted << " inverted";
+    }
+    line<< "), relative boundary error " << r.boundaryError
         << (r.atMaxPoints ? " (at maxPoints)" : "");
     line<< ", time [ms] swap " << ms(r.swapTime).c_str()
         << " select " << ms(r.selectTime).c_str()
@@ -95,7 +100,7 @@ void Foam::dcpRBFStepLog::write(const record& r)
             << "# dcpRBF motion solver, one row per step" << nl
             << "# time nControl nAdded nRemoved nGuard nCells minQuality"
             << " meanQuality boundaryError atMaxPoints swapTime selectTime"
-            << " interpolateTime guardTime nUndone pointsTime" << endl;
+            << " interpolateTime guardTime nUndone pointsTime nInverted" << endl;
     }
     file_()
         << time_.timeName() << ' ' << r.nControl << ' ' << r.nAdded << ' '
@@ -103,7 +108,7 @@ void Foam::dcpRBFStepLog::write(const record& r)
         << r.minQuality << ' ' << r.meanQuality << ' ' << r.boundaryError
         << ' ' << label(r.atMaxPoints) << ' ' << r.swapTime << ' '
         << r.selectTime << ' ' << r.interpolateTime << ' ' << r.guardTime
-        << ' ' << r.nUndone << ' ' << r.pointsTime << endl;
+        << ' ' << r.nUndone << ' ' << r.pointsTime << ' ' << r.nInverted << endl;
 }
 
 

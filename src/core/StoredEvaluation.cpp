@@ -6,6 +6,7 @@
 #include <array>
 #include <map>
 #include <numeric>
+#include <string>
 
 namespace dcprbf
 {
@@ -135,6 +136,8 @@ bool StoredEvaluation::prepare(const Points& centres, std::size_t budgetBytes)
     // whose set does not fit does not pay the count pass again)
     if (same(refused_) && budgetBytes <= refusedBudget_)
     {
+        current_ = -1;
+        patch_ = Patch();
         return false;
     }
     // a patch of the current slot, else of the other
@@ -408,6 +411,15 @@ bool StoredEvaluation::evaluateInto
     double* out
 ) const
 {
+    if (targets.start.size() != std::size_t(x_.rows()) + 1)
+    {
+        throw Error
+        (
+            "StoredEvaluation::evaluateInto: targets for "
+          + std::to_string(targets.start.size() - 1) + " rows, the matrix has "
+          + std::to_string(x_.rows())
+        );
+    }
     if (current_ < 0 && patch_.base < 0)
     {
         return false;

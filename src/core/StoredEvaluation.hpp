@@ -51,7 +51,9 @@ public:
 
     //- Where evaluateInto() writes each row: row i's value to the
     //  3-vectors at out + 3 t for t in point[start[i] .. start[i + 1])
-    //  (e.g. a 2D mesh's front and back points of a distinct row)
+    //  (e.g. a 2D mesh's front and back points of a distinct row). start
+    //  has a value per row and one more; a point is the target of one row
+    //  at most (rows are written on threads)
     struct Targets
     {
         std::vector<std::size_t> start;

@@ -85,13 +85,25 @@ TEST(StoredEvaluation, BitIdenticalOnOneAndTwoThreads)
     const Values alpha = test::smoothField(c);
     const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
     Values v1, v2;
+    // and written straight to targets (each row to point n - 1 - i)
+    StoredEvaluation::Targets t;
+    for (Eigen::Index i = 0; i <= x.rows(); ++i) t.start.push_back(std::size_t(i));
+    for (Eigen::Index i = 0; i < x.rows(); ++i) t.point.push_back(int(x.rows() - 1 - i));
+    std::vector<double> o1(3*x.rows()), o2(3*x.rows());
     const int nThreads = omp_get_max_threads();
     omp_set_num_threads(1);
     s.evaluate(alpha, beta, v1);
+    ASSERT_TRUE(s.evaluateInto(alpha, beta, t, 3, o1.data()));
     omp_set_num_threads(2);
     s.evaluate(alpha, beta, v2);
+    ASSERT_TRUE(s.evaluateInto(alpha, beta, t, 3, o2.data()));
     omp_set_num_threads(nThreads);
     EXPECT_TRUE(v1 == v2);
+    EXPECT_TRUE(o1 == o2);
+    for (Eigen::Index i = 0; i < x.rows(); ++i)
+    {
+        for (int q = 0; q < 3; ++q) ASSERT_EQ(o1[3*(x.rows() - 1 - i) + q], v1(i, q)) << i;
+    }
 }
 
 TEST(StoredEvaluation, ColumnsOfEightSixteenAndThirtyTwoBitsEqualTheEvaluator)
@@ -172,8 +184,8 @@ TEST(StoredEvaluation, EvaluateIntoWritesEachRowToItsTargets)
     const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.5);
     StoredEvaluation s(k, frame, x);
     ASSERT_TRUE(s.prepare(c, std::size_t(1) << 30));
-    const Values alpha = test::smoothField(c);
-    const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+    Values alpha = test::smoothField(c);
+    Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
     Values rows;
     s.evaluate(alpha, beta, rows);
 
@@ -214,13 +226,25 @@ TEST(StoredEvaluation, EvaluateIntoWritesEachRowToItsTargets)
                 if (!written[p])
                 {
                     ++untouched;
-                    EXPECT_TRUE(std::isnan(out[3*p]) && std::isnan(out[3*p + 2])) << what << ": point " << p;
+                    EXPECT_TRUE(std::isnan(out[3*p]) && std::isnan(out[3*p + 1]) && std::isnan(out[3*p + 2]))
+                        << what << ": point " << p;
                 }
             }
             EXPECT_GT(untouched, 100) << what;
         }
     };
     check(rows, "stored set");
+
+    // the last columns zero (a 2D set: the two-column product)
+    const Values alpha3 = alpha;
+    const Eigen::MatrixX3d beta3 = beta;
+    alpha.col(2).setZero();
+    beta.col(2).setZero();
+    Values rows2;
+    s.evaluate(alpha, beta, rows2);
+    check(rows2, "two columns");
+    alpha = alpha3;
+    beta = beta3;
 
     // a patched set: two centres moved (two patch columns)
     Points moved = c;
@@ -231,6 +255,12 @@ TEST(StoredEvaluation, EvaluateIntoWritesEachRowToItsTargets)
     Values patched;
     s.evaluate(alpha, beta, patched);
     check(patched, "patched set");
+
+    // targets for another number of rows: an error
+    StoredEvaluation::Targets wrong = t;
+    wrong.start.pop_back();
+    std::vector<double> buffer(3*1000);
+    EXPECT_THROW(s.evaluateInto(alpha, beta, wrong, 3, buffer.data()), Error);
 
     // a dense matrix: refused, nothing written
     std::vector<double> out(3*1000, 7.0);

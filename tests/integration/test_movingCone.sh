@@ -104,7 +104,9 @@ test_movingConePlanar_parallelEqualsSerial() {
 # full on the first step of a run of them and every 100 steps (each step's
 # dcpRBF line counts the cells: a run under a flow solver wrote 19 000
 # warning lines); the fall of the minimum quality below 0.2 is said once,
-# before the first inverted cell
+# before the first inverted cell (this motion squeezes the cells over many
+# steps: a step with 0 < q < 0.2 comes first; a motion that jumped past it
+# would need another check)
 test_movingConePlanar_invertedWarningSuggestsWhatIsNotSet() {
     local sel expected got low first
     movingConePlanarCase || return 1

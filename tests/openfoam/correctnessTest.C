@@ -476,32 +476,37 @@ TEST(ErrorGuidedBlend, PhasedInSwapsKeepTheMeshVelocitySmooth)
     EXPECT_LT(largestJerk(phased), 0.5*largestJerk(atOnce));
 }
 
-// Stored kernel matrices (evaluationMemoryMB, default) and evaluation on
-// the fly (0) move the mesh the same, over steps where the set changes
+// Stored kernel matrices (evaluationMemoryMB, default: the product written
+// straight to the points, in 2D to both twins) and evaluation on the fly
+// (0) move the mesh the same, over steps where the set changes (patched
+// matrices), in 2D and 3D
 TEST(StoredEvaluation, MovesTheMeshAsEvaluationOnTheFly)
 {
-    std::vector<pointField> p[2];
-    for (const int stored : {0, 1})
+    for (const label dim : {2, 3})
     {
-        testCase c(3, 6, patches + " controlPoints { selection dynamic; tolerance 1e-2; }"
-            + (stored ? "" : " evaluationMemoryMB 0;"));
-        autoPtr<motionSolver> ms(select(c));
-        auto& solver = refCast<dcpRBFMotionSolver>(ms());
-        for (label step = 1; step <= 4; ++step)
+        std::vector<pointField> p[2];
+        for (const int stored : {0, 1})
         {
-            ++c.runTime();
-            const scalar a = 0.05*step;
-            prescribe(solver.pointDisplacement(), "bottom", [a](const point& x) { return bump(x, a); });
-            const pointField pts(ms->newPoints());
-            c.mesh().movePoints(pts);
-            p[stored].push_back(pts);
+            testCase c(dim, 6, patches + " controlPoints { selection dynamic; tolerance 1e-2; }"
+                + (stored ? "" : " evaluationMemoryMB 0;"));
+            autoPtr<motionSolver> ms(select(c));
+            auto& solver = refCast<dcpRBFMotionSolver>(ms());
+            for (label step = 1; step <= 4; ++step)
+            {
+                ++c.runTime();
+                const scalar a = 0.05*step;
+                prescribe(solver.pointDisplacement(), "bottom", [a](const point& x) { return bump(x, a); });
+                const pointField pts(ms->newPoints());
+                c.mesh().movePoints(pts);
+                p[stored].push_back(pts);
+            }
         }
-    }
-    for (std::size_t s = 0; s < p[0].size(); ++s)
-    {
-        scalar d = 0;
-        forAll(p[0][s], i) d = max(d, mag(p[0][s][i] - p[1][s][i]));
-        EXPECT_LT(d, 1e-12) << "step " << s + 1;
+        for (std::size_t s = 0; s < p[0].size(); ++s)
+        {
+            scalar d = 0;
+            forAll(p[0][s], i) d = max(d, mag(p[0][s][i] - p[1][s][i]));
+            EXPECT_LT(d, 1e-12) << dim << "D, step " << s + 1;
+        }
     }
 }
 
