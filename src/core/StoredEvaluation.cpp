@@ -429,37 +429,19 @@ bool StoredEvaluation::evaluateInto
     {
         return false;
     }
-    const Values a = patch_.base < 0 ? Values() : slotWeights(s, alpha);
-    const Values& as = patch_.base < 0 ? alpha : a;
     const Scatter scatter{targets, components, out};
     Values unused;
-    if (activeColumns(alpha, beta) == 2)
-    {
-        product<2>(s, as, beta, unused, &scatter);
-    }
-    else
-    {
-        product<3>(s, as, beta, unused, &scatter);
-    }
+    productOf(s, alpha, beta, unused, &scatter);
     // the patch's columns, added to each target of their rows as
     // evaluate() adds them to the rows (the same order: the same bits)
-    for (std::size_t e = 0; e < patch_.centre.size(); ++e)
+    addPatchColumns(alpha, [&](const std::size_t r, const double v, const double* aj)
     {
-        const auto aj = alpha.row(patch_.centre[e]);
-        const std::vector<int>& rows = patch_.rows[e];
-        const std::vector<double>& values = patch_.values[e];
-        const std::ptrdiff_t nk = std::ptrdiff_t(rows.size());
-        #pragma omp parallel for schedule(static) if(nk >= minParallelRows)
-        for (std::ptrdiff_t k = 0; k < nk; ++k)
+        for (std::size_t t = targets.start[r]; t < targets.start[r + 1]; ++t)
         {
-            const std::size_t r = std::size_t(rows[k]);
-            for (std::size_t t = targets.start[r]; t < targets.start[r + 1]; ++t)
-            {
-                double* o = out + 3*std::size_t(targets.point[t]);
-                for (int q = 0; q < components; ++q) o[q] += values[k]*aj(q);
-            }
+            double* o = out + 3*std::size_t(targets.point[t]);
+            for (int q = 0; q < components; ++q) o[q] += v*aj[q];
         }
-    }
+    });
     return true;
 }
 
@@ -480,6 +462,48 @@ Values StoredEvaluation::slotWeights(const Slot& s, const Values& alpha) const
 }
 
 
+void StoredEvaluation::productOf
+(
+    const Slot& s,
+    const Values& alpha,
+    const Eigen::MatrixX3d& beta,
+    Values& out,
+    const Scatter* scatter
+) const
+{
+    // a patched set's weights in the slot's columns
+    const Values a = patch_.base < 0 ? Values() : slotWeights(s, alpha);
+    const Values& as = patch_.base < 0 ? alpha : a;
+    if (activeColumns(alpha, beta) == 2)
+    {
+        product<2>(s, as, beta, out, scatter);
+    }
+    else
+    {
+        product<3>(s, as, beta, out, scatter);
+    }
+}
+
+
+template<class Add>
+void StoredEvaluation::addPatchColumns(const Values& alpha, const Add& add) const
+{
+    for (std::size_t e = 0; e < patch_.centre.size(); ++e)
+    {
+        // a column's rows are distinct: threads for a long one
+        const double* aj = &alpha(patch_.centre[e], 0);
+        const std::vector<int>& rows = patch_.rows[e];
+        const std::vector<double>& values = patch_.values[e];
+        const std::ptrdiff_t nk = std::ptrdiff_t(rows.size());
+        #pragma omp parallel for schedule(static) if(nk >= minParallelRows)
+        for (std::ptrdiff_t k = 0; k < nk; ++k)
+        {
+            add(std::size_t(rows[k]), values[k], aj);
+        }
+    }
+}
+
+
 void StoredEvaluation::evaluate
 (
     const Values& alpha,
@@ -487,31 +511,12 @@ void StoredEvaluation::evaluate
     Values& out
 ) const
 {
-    const Slot& s = slots_[patch_.base < 0 ? current_ : patch_.base];
-    const Values a = patch_.base < 0 ? Values() : slotWeights(s, alpha);
-    const Values& as = patch_.base < 0 ? alpha : a;
     out.resize(x_.rows(), 3);
-    if (activeColumns(alpha, beta) == 2)
+    productOf(slots_[patch_.base < 0 ? current_ : patch_.base], alpha, beta, out);
+    addPatchColumns(alpha, [&](const std::size_t r, const double v, const double* aj)
     {
-        product<2>(s, as, beta, out);
-    }
-    else
-    {
-        product<3>(s, as, beta, out);
-    }
-    for (std::size_t e = 0; e < patch_.centre.size(); ++e)
-    {
-        // a column's rows are distinct: threads for a long one
-        const auto aj = alpha.row(patch_.centre[e]);
-        const std::vector<int>& rows = patch_.rows[e];
-        const std::vector<double>& values = patch_.values[e];
-        const std::ptrdiff_t nk = std::ptrdiff_t(rows.size());
-        #pragma omp parallel for schedule(static) if(nk >= minParallelRows)
-        for (std::ptrdiff_t k = 0; k < nk; ++k)
-        {
-            out.row(rows[k]) += values[k]*aj;
-        }
-    }
+        for (int q = 0; q < 3; ++q) out(Eigen::Index(r), q) += v*aj[q];
+    });
 }
 
 

@@ -133,6 +133,7 @@ private:
     //- The patched set's weights alpha in slot s's columns
     Values slotWeights(const Slot& s, const Values& alpha) const;
 
+
     //- Where a product's rows go instead of out (evaluateInto)
     struct Scatter
     {
@@ -153,6 +154,22 @@ private:
         Values& out,
         const Scatter* scatter = nullptr
     ) const;
+
+    //- The product of slot s (patched: the shared centres' columns) into
+    //  out or to the scatter's targets
+    void productOf
+    (
+        const Slot& s,
+        const Values& alpha,
+        const Eigen::MatrixX3d& beta,
+        Values& out,
+        const Scatter* scatter = nullptr
+    ) const;
+
+    //- add(row, value, weights of its centre) for each entry of the
+    //  patch's own columns, in order (threads within a long column)
+    template<class Add>
+    void addPatchColumns(const Values& alpha, const Add& add) const;
 
     RadialKernel kernel_;
     LinearPolynomial polynomial_;
