@@ -1,0 +1,261 @@
+// dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+// StoredEvaluation, continued: the products with the stored matrices (plain,
+// patched, and written straight to their targets).
+#include "StoredEvaluation.hpp"
+
+#include <string>
+
+namespace dcprbf
+{
+
+namespace
+{
+
+//- out[0..C) = sum over the row's entries k of values[k]*a[C*inner[k] + .],
+//  in four interleaved partial sums (four independent addition chains: with
+//  two, the additions' latency bounded the product, 2 cycles per entry)
+template<int C, class Index>
+inline void rowProduct
+(
+    std::size_t k,
+    const std::size_t end,
+    const double* values,
+    const Index* inner,
+    const double* a,
+    double* out
+)
+{
+    constexpr int U = 4;
+    double v[U][C] = {};
+    for (; k + U - 1 < end; k += U)
+    {
+        for (int u = 0; u < U; ++u)
+        {
+            const double* au = a + C*inner[k + u];
+            for (int q = 0; q < C; ++q) v[u][q] += values[k + u]*au[q];
+        }
+    }
+    for (; k < end; ++k)
+    {
+        const double* a0 = a + C*inner[k];
+        for (int q = 0; q < C; ++q) v[0][q] += values[k]*a0[q];
+    }
+    for (int q = 0; q < C; ++q) out[q] = (v[0][q] + v[1][q]) + (v[2][q] + v[3][q]);
+}
+
+
+//- The right-hand sides' columns in the product: 2 when the last column of
+//  alpha and beta is zero (2D: the normal direction), else 3
+int activeColumns(const Values& alpha, const Eigen::MatrixX3d& beta)
+{
+    return alpha.col(2).isZero(0) && beta.col(2).isZero(0) ? 2 : 3;
+}
+
+} // namespace
+
+
+template<int C>
+void StoredEvaluation::product
+(
+    const Slot& s,
+    const Values& alpha,
+    const Eigen::MatrixX3d& beta,
+    Values& out,
+    const Scatter* scatter
+) const
+{
+    const std::ptrdiff_t n = x_.rows();
+    const int P = polynomial_.size();
+    const int L = int(basis_.cols());   // P - 1: Q's columns after the ones
+    // alpha and beta with C columns, contiguous
+    std::vector<double> a(C*alpha.rows()), b(C*P);
+    for (Eigen::Index j = 0; j < alpha.rows(); ++j)
+    {
+        for (int q = 0; q < C; ++q) a[C*j + q] = alpha(j, q);
+    }
+    for (int p = 0; p < P; ++p)
+    {
+        for (int q = 0; q < C; ++q) b[C*p + q] = beta(p, q);
+    }
+    if (s.dense.size())
+    {
+        out.noalias() = s.dense*alpha;
+    }
+    // threads for a product worth waking them: a short one (the boundary
+    // error at the candidates) costs microseconds, waking a sleeping
+    // thread up to a few hundred
+    const std::size_t entries = s.dense.size() ? s.dense.size() : s.values.size();
+    #pragma omp parallel for schedule(static) if(entries >= minParallelEntries)
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+    {
+        double v[3] = {0, 0, 0};
+        if (s.dense.size())
+        {
+            for (int q = 0; q < C; ++q) v[q] = out(i, q);
+        }
+        else
+        {
+            const std::size_t k = s.outer[i], end = s.outer[i + 1];
+            if (!s.inner8.empty())
+            {
+                rowProduct<C>(k, end, s.values.data(), s.inner8.data(), a.data(), v);
+            }
+            else if (!s.inner.empty())
+            {
+                rowProduct<C>(k, end, s.values.data(), s.inner.data(), a.data(), v);
+            }
+            else
+            {
+                rowProduct<C>(k, end, s.values.data(), s.inner32.data(), a.data(), v);
+            }
+        }
+        // + Q(x_i) beta: the constant (times 1, exactly), then the rest
+        const double* qi = basis_.data() + std::ptrdiff_t(L)*i;
+        for (int q = 0; P > 0 && q < C; ++q) v[q] += b[q];
+        for (int p = 0; p < L; ++p)
+        {
+            for (int q = 0; q < C; ++q) v[q] += qi[p]*b[C*(p + 1) + q];
+        }
+        if (scatter)
+        {
+            const Targets& t = scatter->targets;
+            for (std::size_t k = t.start[i]; k < t.start[i + 1]; ++k)
+            {
+                double* o = scatter->out + 3*std::size_t(t.point[k]);
+                for (int q = 0; q < 3; ++q) o[q] = q < scatter->components ? v[q] : 0.0;
+            }
+        }
+        else
+        {
+            out(i, 0) = v[0];
+            out(i, 1) = v[1];
+            out(i, 2) = v[2];
+        }
+    }
+}
+
+
+bool StoredEvaluation::evaluateInto
+(
+    const Values& alpha,
+    const Eigen::MatrixX3d& beta,
+    const Targets& targets,
+    const int components,
+    double* out
+) const
+{
+    if (targets.start.size() != std::size_t(x_.rows()) + 1)
+    {
+        throw Error
+        (
+            "StoredEvaluation::evaluateInto: targets for "
+          + std::to_string(targets.start.size() - 1) + " rows, the matrix has "
+          + std::to_string(x_.rows())
+        );
+    }
+    if (current_ < 0 && patch_.base < 0)
+    {
+        return false;
+    }
+    const Slot& s = slots_[patch_.base < 0 ? current_ : patch_.base];
+    if (s.dense.size())
+    {
+        return false;
+    }
+    const Scatter scatter{targets, components, out};
+    Values unused;
+    productOf(s, alpha, beta, unused, &scatter);
+    // the patch's columns, added to each target of their rows as
+    // evaluate() adds them to the rows (the same order: the same bits)
+    addPatchColumns(alpha, [&](const std::size_t r, const double v, const double* aj)
+    {
+        for (std::size_t t = targets.start[r]; t < targets.start[r + 1]; ++t)
+        {
+            double* o = out + 3*std::size_t(targets.point[t]);
+            for (int q = 0; q < components; ++q) o[q] += v*aj[q];
+        }
+    });
+    return true;
+}
+
+
+Values StoredEvaluation::slotWeights(const Slot& s, const Values& alpha) const
+{
+    // the shared centres through the stored matrix (zero for the slot's
+    // centres the set no longer has), the others alone
+    Values a = Values::Zero(s.centres.rows(), 3);
+    for (std::size_t j = 0; j < patch_.column.size(); ++j)
+    {
+        if (patch_.column[j] >= 0)
+        {
+            a.row(patch_.column[j]) = alpha.row(j);
+        }
+    }
+    return a;
+}
+
+
+void StoredEvaluation::productOf
+(
+    const Slot& s,
+    const Values& alpha,
+    const Eigen::MatrixX3d& beta,
+    Values& out,
+    const Scatter* scatter
+) const
+{
+    // a patched set's weights in the slot's columns
+    const Values a = patch_.base < 0 ? Values() : slotWeights(s, alpha);
+    const Values& as = patch_.base < 0 ? alpha : a;
+    if (activeColumns(alpha, beta) == 2)
+    {
+        product<2>(s, as, beta, out, scatter);
+    }
+    else
+    {
+        product<3>(s, as, beta, out, scatter);
+    }
+}
+
+
+template<class Add>
+void StoredEvaluation::addPatchColumns(const Values& alpha, const Add& add) const
+{
+    for (std::size_t e = 0; e < patch_.centre.size(); ++e)
+    {
+        // a column's rows are distinct: threads for a long one
+        const double* aj = &alpha(patch_.centre[e], 0);
+        const std::vector<int>& rows = patch_.rows[e];
+        const std::vector<double>& values = patch_.values[e];
+        const std::ptrdiff_t nk = std::ptrdiff_t(rows.size());
+        #pragma omp parallel for schedule(static) if(nk >= minParallelRows)
+        for (std::ptrdiff_t k = 0; k < nk; ++k)
+        {
+            add(std::size_t(rows[k]), values[k], aj);
+        }
+    }
+}
+
+
+void StoredEvaluation::evaluate
+(
+    const Values& alpha,
+    const Eigen::MatrixX3d& beta,
+    Values& out
+) const
+{
+    out.resize(x_.rows(), 3);
+    productOf(slots_[patch_.base < 0 ? current_ : patch_.base], alpha, beta, out);
+    addPatchColumns(alpha, [&](const std::size_t r, const double v, const double* aj)
+    {
+        for (int q = 0; q < 3; ++q) out(Eigen::Index(r), q) += v*aj[q];
+    });
+}
+
+
+std::size_t StoredEvaluation::bytes() const
+{
+    return slots_[0].bytes() + slots_[1].bytes() + patch_.bytes();
+}
+
+} // namespace dcprbf
