@@ -121,17 +121,37 @@ Foam::scalar Foam::dcpRBFBoundaryCorrection::apply
     // for many
     const label kEnd =
         label(std::lower_bound(distance_.begin(), distance_.end(), R) - distance_.begin());
+    // the errors in the mesh's axes, once per target
+    vectorField errorOnMesh(label(error.rows()));
+    forAll(errorOnMesh, b)
+    {
+        errorOnMesh[b] = projection.fromCore(error.row(b).data());
+    }
+    const label* point = point_.cdata();
+    const label* nearest = nearest_.cdata();
+    const scalar* distance = distance_.cdata();
+    const vector* e = errorOnMesh.cdata();
+    vector* d = displacement.data();
+    if (targetRadius_.empty())
+    {
+        #pragma omp parallel for schedule(static) if(kEnd >= minParallelPoints)
+        for (label k = 0; k < kEnd; ++k)
+        {
+            d[point[k]] += phi(distance[k])*e[nearest[k]];
+        }
+        return R;
+    }
     #pragma omp parallel for schedule(static) if(kEnd >= minParallelPoints)
     for (label k = 0; k < kEnd; ++k)
     {
-        const label b = nearest_[k];
+        const label b = nearest[k];
         const scalar weight =
-            targetRadius_.empty() || targetRadius_[b] >= R
-          ? phi(distance_[k])
-          : distance_[k] < targetRadius_[b]
-          ? dcprbf::kernels::WendlandC2{1.0/targetRadius_[b]}(distance_[k])
+            targetRadius_[b] >= R
+          ? phi(distance[k])
+          : distance[k] < targetRadius_[b]
+          ? dcprbf::kernels::WendlandC2{1.0/targetRadius_[b]}(distance[k])
           : 0;
-        displacement[point_[k]] += weight*projection.fromCore(error.row(b).data());
+        d[point[k]] += weight*e[b];
     }
     return R;
 }
