@@ -8,7 +8,8 @@
 // the polynomial basis Q, then times s = K alpha + Q beta (3 right-hand
 // sides, random alpha, beta) over `repeats` products, with K stored by
 // columns (Eigen's product) and by rows (each row's three sums in one stream
-// over K, blocks of rows on the threads); the same with the
+// over K, blocks of rows on the threads; also cold: each product after a
+// pass over 256 MB); the same with the
 // core's StoredEvaluation (sparse CSR for the compact kernel) on the same
 // data. nResample > 0: the points are first resampled to nResample points
 // (each a random mesh point + a 1e-4 radius jitter: the same distribution as
@@ -120,11 +121,14 @@ int main(int argc, char** argv)
 
     // the same dense matrix stored by rows: one stream over K, each row's
     // three sums while it is in cache (a mover that keeps its matrix by rows)
-    std::vector<double> tDenseRows;
+    // Timed warm (one product after the other, as the others) and cold:
+    // after a pass over a buffer larger than the caches, as in a run, where
+    // the solver's work of the step comes between two products
+    std::vector<double> tDenseRows, tDenseRowsCold;
     Eigen::MatrixX3d sRows(n, 3);
     {
         const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> KR(K);
-        for (int r = 0; r < repeats; ++r)
+        const auto product = [&]()
         {
             const double t = now();
             // blocks of rows on the threads (OMP_NUM_THREADS, as the others)
@@ -136,8 +140,21 @@ int main(int argc, char** argv)
                 sRows.middleRows(i0, m).noalias() = KR.middleRows(i0, m).lazyProduct(alphaC);
             }
             sRows.noalias() += Q*beta;
-            tDenseRows.push_back(now() - t);
+            return now() - t;
+        };
+        std::vector<double> flush(std::size_t(32) << 20);    // 256 MB
+        double sink = 0;
+        for (int r = 0; r < repeats; ++r)
+        {
+            tDenseRows.push_back(product());
         }
+        for (int r = 0; r < repeats; ++r)
+        {
+            for (double& f : flush) f += 1;
+            sink += flush[std::size_t(r)];
+            tDenseRowsCold.push_back(product());
+        }
+        if (sink < 0) std::printf("%g\n", sink);
     }
 
     // the core's stored (sparse) evaluation
@@ -165,6 +182,7 @@ int main(int argc, char** argv)
     std::printf("sparseBytes %.0f\nsparseBuild %.6f\nsparseProduct %.6e\n",
         double(stored.bytes() + Q.size()*sizeof(double)), sparseBuild, median(tSparse));
     std::printf("denseRowsProduct %.6e\n", median(tDenseRows));
+    std::printf("denseRowsColdProduct %.6e\n", median(tDenseRowsCold));
     std::printf("maxRelDiff %.2e\n", diff);
     std::printf("maxRelDiffRows %.2e\n", (sDense - sRows).cwiseAbs().maxCoeff()
         /std::max(1e-300, sDense.cwiseAbs().maxCoeff()));
