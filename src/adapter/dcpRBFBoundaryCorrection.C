@@ -121,6 +121,10 @@ Foam::scalar Foam::dcpRBFBoundaryCorrection::apply
     // for many
     const label kEnd =
         label(std::lower_bound(distance_.begin(), distance_.end(), R) - distance_.begin());
+    if (kEnd == 0)
+    {
+        return R;
+    }
     // the errors in the mesh's axes, once per target
     vectorField errorOnMesh(label(error.rows()));
     forAll(errorOnMesh, b)
