@@ -116,7 +116,7 @@ private:
     void classify(std::vector<std::size_t>& cellStart);
 
     //- Cells measured at once
-    static constexpr std::size_t blockCells = 32;
+    static constexpr std::size_t blockCells = 256;
 
     //- A thread's scratch space for measureBlock
     struct Scratch

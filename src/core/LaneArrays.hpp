@@ -17,13 +17,16 @@ public:
     LaneArrays(const int nIn, const int nOut) : nIn_(nIn), nOut_(nOut) {}
 
     //- Room for n items (their values undefined until set); the room only
-    //  grows (rounded up to a multiple of 8 items)
+    //  grows (rounded up to a multiple of 8 items, and off a multiple of
+    //  64: components a power of two apart share cache sets, and a batch's
+    //  dozens of components then evict each other)
     void resize(const std::size_t n)
     {
         n_ = n;
         if (n > stride_)
         {
             stride_ = (std::max(n, 2*stride_) + 7)/8*8;
+            stride_ += stride_ % 64 == 0 ? 8 : 0;
             in_.assign(std::size_t(nIn_)*stride_, 0.0);
             out_.assign(std::size_t(nOut_)*stride_, 0.0);
         }

@@ -276,6 +276,18 @@ TEST(CellQualityScan, TetrahedralCellsMeasuredAsThemselvesEqualTheDecomposition)
 }
 
 
+TEST(CellQualityScan, MixedCellsOverManyBlocksEqualTheDecomposition)
+{
+    // hexahedra, tetrahedra and prisms in turn: 2187 cells, several of
+    // the scan's blocks of 256 (each block's batches hold every kind; some
+    // cells inverted)
+    const HexBlock b(9, HexBlock::Split::mixed);
+    const CellQualityScan probe(b.scan(TetQuality::Metric::sizeShape));
+    ASSERT_EQ(probe.size(), 2187u);
+    expectTheDecomposition(b, deformed(b.points, 0.3, 7), probe.size());
+}
+
+
 TEST(CellQualityScan, RigidMotionIsOne)
 {
     const HexBlock b(3);
