@@ -421,6 +421,18 @@ TEST(CellQualityScan, DegenerateReferenceCellsAreOne)
 }
 
 
+TEST(CellQualityScan, PrismsWithSomeDegenerateReferenceTetrahedraEqualTheDecomposition)
+{
+    // one reference point moved onto the point below it: the prisms around
+    // that vertical edge have degenerate reference tetrahedra among valid
+    // ones (the checked kernel), the others all valid (the unchecked one)
+    HexBlock b(3, HexBlock::Split::prisms);
+    const int n1 = 4, above = 1 + n1*(1 + n1*1), below = 1 + n1*1;
+    for (int d = 0; d < 3; ++d) b.points[3*above + d] = b.points[3*below + d];
+    expectTheDecomposition(b, deformed(b.points, 0.45, 13), 2*27);
+}
+
+
 TEST(CellQualityScan, PrismCellsEqualTheDecomposition)
 {
     // 2 x 6^3 prisms, faces in every order, orientation and first point,
