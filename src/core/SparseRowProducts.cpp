@@ -23,10 +23,27 @@ void scalarRows
     const Index* inner, const double* values, const double* a, double* out
 )
 {
-    constexpr int S = sparseRowStride(C);
+    constexpr int S = sparseRowStride(C), U = 4;
     for (std::size_t i = i0; i < i1; ++i)
     {
-        sparseRowProduct<C, S>(outer[i], outer[i + 1], values, inner, a, out + C*(i - i0));
+        std::size_t k = outer[i];
+        const std::size_t end = outer[i + 1];
+        double v[U][C] = {};
+        for (; k + U - 1 < end; k += U)
+        {
+            for (int u = 0; u < U; ++u)
+            {
+                const double* au = a + S*std::size_t(inner[k + u]);
+                for (int q = 0; q < C; ++q) v[u][q] += values[k + u]*au[q];
+            }
+        }
+        for (; k < end; ++k)
+        {
+            const double* a0 = a + S*std::size_t(inner[k]);
+            for (int q = 0; q < C; ++q) v[0][q] += values[k]*a0[q];
+        }
+        double* o = out + C*(i - i0);
+        for (int q = 0; q < C; ++q) o[q] = (v[0][q] + v[1][q]) + (v[2][q] + v[3][q]);
     }
 }
 

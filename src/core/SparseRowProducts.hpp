@@ -25,37 +25,6 @@ namespace dcprbf
 //- The stride of a's rows for C columns (2 or 3)
 constexpr int sparseRowStride(const int C) { return C == 3 ? 4 : 2; }
 
-//- One row (its entries k .. end) times a, columns q < C into out[q]; a's
-//  rows S apart (inline: the per-row loops of the scalar products)
-template<int C, int S, class Index>
-inline void sparseRowProduct
-(
-    std::size_t k,
-    const std::size_t end,
-    const double* values,
-    const Index* inner,
-    const double* a,
-    double* out
-)
-{
-    constexpr int U = 4;
-    double v[U][C] = {};
-    for (; k + U - 1 < end; k += U)
-    {
-        for (int u = 0; u < U; ++u)
-        {
-            const double* au = a + S*std::size_t(inner[k + u]);
-            for (int q = 0; q < C; ++q) v[u][q] += values[k + u]*au[q];
-        }
-    }
-    for (; k < end; ++k)
-    {
-        const double* a0 = a + S*std::size_t(inner[k]);
-        for (int q = 0; q < C; ++q) v[0][q] += values[k]*a0[q];
-    }
-    for (int q = 0; q < C; ++q) out[q] = (v[0][q] + v[1][q]) + (v[2][q] + v[3][q]);
-}
-
 //- v[C (i - i0) + q] = row i times a, column q < C, for rows i0 .. i1 of
 //  the rows outer (row i's entries outer[i] .. outer[i+1]), inner, values;
 //  a: sparseRowStride(C) doubles per row (wide false: the scalar loop;

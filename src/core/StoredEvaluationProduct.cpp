@@ -15,6 +15,39 @@ namespace dcprbf
 namespace
 {
 
+//- out[0..C) = sum over the row's entries k of values[k]*a[C*inner[k] + .],
+//  in four interleaved partial sums (four independent addition chains: with
+//  two, the additions' latency bounded the product, 2 cycles per entry)
+template<int C, class Index>
+inline void rowProduct
+(
+    std::size_t k,
+    const std::size_t end,
+    const double* values,
+    const Index* inner,
+    const double* a,
+    double* out
+)
+{
+    constexpr int U = 4;
+    double v[U][C] = {};
+    for (; k + U - 1 < end; k += U)
+    {
+        for (int u = 0; u < U; ++u)
+        {
+            const double* au = a + C*inner[k + u];
+            for (int q = 0; q < C; ++q) v[u][q] += values[k + u]*au[q];
+        }
+    }
+    for (; k < end; ++k)
+    {
+        const double* a0 = a + C*inner[k];
+        for (int q = 0; q < C; ++q) v[0][q] += values[k]*a0[q];
+    }
+    for (int q = 0; q < C; ++q) out[q] = (v[0][q] + v[1][q]) + (v[2][q] + v[3][q]);
+}
+
+
 //- The right-hand sides' columns in the product: 2 when the last column of
 //  alpha and beta is zero (2D: the normal direction), else 3
 int activeColumns(const Values& alpha, const Eigen::MatrixX3d& beta)
@@ -135,15 +168,15 @@ void StoredEvaluation::product
             const std::size_t k = s.outer[i], end = s.outer[i + 1];
             if (!s.inner8.empty())
             {
-                sparseRowProduct<C, C>(k, end, s.values.data(), s.inner8.data(), a.data(), v);
+                rowProduct<C>(k, end, s.values.data(), s.inner8.data(), a.data(), v);
             }
             else if (!s.inner.empty())
             {
-                sparseRowProduct<C, C>(k, end, s.values.data(), s.inner.data(), a.data(), v);
+                rowProduct<C>(k, end, s.values.data(), s.inner.data(), a.data(), v);
             }
             else
             {
-                sparseRowProduct<C, C>(k, end, s.values.data(), s.inner32.data(), a.data(), v);
+                rowProduct<C>(k, end, s.values.data(), s.inner32.data(), a.data(), v);
             }
         }
         finish(i, v);
