@@ -2,10 +2,6 @@
 // StoredEvaluation, continued: the products with the stored matrices (plain,
 // patched, and written straight to their targets).
 #include "StoredEvaluation.hpp"
-#include "SparseRowProducts.hpp"
-
-#include <algorithm>
-#include <cstdint>
 
 #include <string>
 
@@ -81,16 +77,6 @@ void StoredEvaluation::product
     {
         for (int q = 0; q < C; ++q) b[C*p + q] = beta(p, q);
     }
-    // 3 columns with AVX2: the sparse rows by sparseRowProducts' vector
-    // kernel (the same bits), alpha's rows 4 apart, 32-byte aligned
-    const bool avx2 = C == 3 && !s.dense.size() && sparseRowProductsAvx2();
-    std::vector<double> a4Buf(avx2 ? 4*alpha.rows() + 4 : 0, 0.0);
-    double* const a4 =
-        a4Buf.data() + (32 - reinterpret_cast<std::uintptr_t>(a4Buf.data()) % 32) % 32/sizeof(double);
-    for (Eigen::Index j = 0; avx2 && j < alpha.rows(); ++j)
-    {
-        for (int q = 0; q < 3; ++q) a4[4*j + q] = alpha(j, q);
-    }
     if (s.dense.size())
     {
         out.noalias() = s.dense*alpha;
@@ -99,62 +85,6 @@ void StoredEvaluation::product
     // error at the candidates) costs microseconds, waking a sleeping
     // thread up to a few hundred
     const std::size_t entries = s.dense.size() ? s.dense.size() : s.values.size();
-    // row i: + Q(x_i) beta, then to its targets (or to out)
-    const auto finish = [&](const std::ptrdiff_t i, double* v)
-    {
-        // the constant (times 1, exactly), then the rest
-        const double* qi = basis_.data() + std::ptrdiff_t(L)*i;
-        for (int q = 0; P > 0 && q < C; ++q) v[q] += b[q];
-        for (int p = 0; p < L; ++p)
-        {
-            for (int q = 0; q < C; ++q) v[q] += qi[p]*b[C*(p + 1) + q];
-        }
-        if (scatter)
-        {
-            const Targets& t = scatter->targets;
-            for (std::size_t k = t.start[i]; k < t.start[i + 1]; ++k)
-            {
-                double* o = scatter->out + 3*std::size_t(t.point[k]);
-                for (int q = 0; q < 3; ++q) o[q] = q < scatter->components ? v[q] : 0.0;
-            }
-        }
-        else
-        {
-            out(i, 0) = v[0];
-            out(i, 1) = v[1];
-            out(i, 2) = v[2];
-        }
-    };
-    if (avx2)
-    {
-        // the rows in blocks: each block's sparse rows in one call
-        constexpr std::ptrdiff_t R = 256;
-        const std::ptrdiff_t nBlocks = (n + R - 1)/R;
-        #pragma omp parallel for schedule(static) if(entries >= minParallelEntries)
-        for (std::ptrdiff_t bi = 0; bi < nBlocks; ++bi)
-        {
-            const std::ptrdiff_t i0 = bi*R, i1 = std::min(n, i0 + R);
-            const std::size_t r0 = std::size_t(i0), r1 = std::size_t(i1);
-            double sums[3*R];
-            if (!s.inner8.empty())
-            {
-                sparseRowProducts(3, r0, r1, s.outer.data(), s.inner8.data(), s.values.data(), a4, sums);
-            }
-            else if (!s.inner.empty())
-            {
-                sparseRowProducts(3, r0, r1, s.outer.data(), s.inner.data(), s.values.data(), a4, sums);
-            }
-            else
-            {
-                sparseRowProducts(3, r0, r1, s.outer.data(), s.inner32.data(), s.values.data(), a4, sums);
-            }
-            for (std::ptrdiff_t i = i0; i < i1; ++i)
-            {
-                finish(i, &sums[3*(i - i0)]);
-            }
-        }
-        return;
-    }
     #pragma omp parallel for schedule(static) if(entries >= minParallelEntries)
     for (std::ptrdiff_t i = 0; i < n; ++i)
     {
@@ -179,7 +109,28 @@ void StoredEvaluation::product
                 rowProduct<C>(k, end, s.values.data(), s.inner32.data(), a.data(), v);
             }
         }
-        finish(i, v);
+        // + Q(x_i) beta: the constant (times 1, exactly), then the rest
+        const double* qi = basis_.data() + std::ptrdiff_t(L)*i;
+        for (int q = 0; P > 0 && q < C; ++q) v[q] += b[q];
+        for (int p = 0; p < L; ++p)
+        {
+            for (int q = 0; q < C; ++q) v[q] += qi[p]*b[C*(p + 1) + q];
+        }
+        if (scatter)
+        {
+            const Targets& t = scatter->targets;
+            for (std::size_t k = t.start[i]; k < t.start[i + 1]; ++k)
+            {
+                double* o = scatter->out + 3*std::size_t(t.point[k]);
+                for (int q = 0; q < 3; ++q) o[q] = q < scatter->components ? v[q] : 0.0;
+            }
+        }
+        else
+        {
+            out(i, 0) = v[0];
+            out(i, 1) = v[1];
+            out(i, 2) = v[2];
+        }
     }
 }
 
