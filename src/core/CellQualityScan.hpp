@@ -69,7 +69,7 @@ public:
     //  as the reference points) into q (wide false: the SIMD kernels'
     //  default-target build even with AVX2 or AVX-512; the same values;
     //  not to be called concurrently on one scan: a scratch copy of the
-    //  points is kept)
+    //  points and each thread's batches are kept)
     void measure(const double* p, double* q, bool wide = true) const;
 
 private:
@@ -132,6 +132,10 @@ private:
             finals(metric, wide)
         {}
     };
+
+    //- Each thread's scratch space, kept from one measurement to the next
+    //  (allocating and clearing a block's batches each time costs ~0.1 ms)
+    mutable std::vector<std::unique_ptr<Scratch>> scratch_;
 
     //- The qualities of the m cells from i0 (at most blockCells) for the
     //  compact current points x into q (the caller's order)

@@ -3,6 +3,8 @@
 #include "CellQualityScan.hpp"
 #include "TetMeasures.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <memory>
 
@@ -181,6 +183,11 @@ void CellQualityScan::measure(const double* p, double* q, const bool wide) const
     double* const x = compact_.get();
     const std::size_t n = size();
     const long nBlocks = long((n + blockCells - 1)/blockCells);
+    const std::size_t nThreads = n >= minParallelCells ? std::size_t(omp_get_max_threads()) : 1;
+    if (scratch_.size() < nThreads)
+    {
+        scratch_.resize(nThreads);
+    }
     // threads for a scan worth waking them (a sleeping thread takes ~0.1 ms)
     #pragma omp parallel if(n >= minParallelCells)
     {
@@ -192,7 +199,12 @@ void CellQualityScan::measure(const double* p, double* q, const bool wide) const
             x[3*i + 1] = y[1];
             x[3*i + 2] = y[2];
         }
-        Scratch s(metric_, wide);
+        std::unique_ptr<Scratch>& slot = scratch_[std::size_t(omp_get_thread_num())];
+        if (!slot || slot->finals.wide() != wide)
+        {
+            slot.reset(new Scratch(metric_, wide));
+        }
+        Scratch& s = *slot;
         #pragma omp for schedule(static, 8)
         for (long b = 0; b < nBlocks; ++b)
         {
