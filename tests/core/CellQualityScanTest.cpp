@@ -325,6 +325,28 @@ TEST(CellQualityScan, BitIdenticalOnOneAndTwoThreads)
 }
 
 
+TEST(CellQualityScan, RepeatedMeasurementsEqualAFreshScans)
+{
+    // each thread's batches are kept between measurements: a scan that
+    // measured other points (on other thread counts and builds) gives the
+    // bits of a fresh scan
+    const HexBlock b(12, HexBlock::Split::mixed);
+    const std::vector<double> p1(deformed(b.points, 0.45, 31)), p2(deformed(b.points, 0.2, 32));
+    const CellQualityScan used(b.scan(TetQuality::Metric::sizeShape));
+    std::vector<double> q(used.size()), fresh(used.size());
+    const int nThreads = omp_get_max_threads();
+    omp_set_num_threads(2);
+    used.measure(p1.data(), q.data(), false);
+    omp_set_num_threads(1);
+    used.measure(p1.data(), q.data());
+    used.measure(p2.data(), q.data());
+    omp_set_num_threads(nThreads);
+    b.scan(TetQuality::Metric::sizeShape).measure(p2.data(), fresh.data());
+    EXPECT_EQ(q, fresh);
+    EXPECT_NE(std::count(q.begin(), q.end(), 1.0), std::ptrdiff_t(q.size()));
+}
+
+
 TEST(CellQualityScan, RefusesInconsistentRows)
 {
     const double p0[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
