@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <map>
 #include <numeric>
 
@@ -170,17 +171,34 @@ bool StoredEvaluation::prepare(const Points& centres, std::size_t budgetBytes)
 
 std::size_t StoredEvaluation::Patch::bytes() const
 {
-    std::size_t b = (column.size() + centre.size())*sizeof(int);
-    for (std::size_t e = 0; e < rows.size(); ++e)
+    return (column.size() + centre.size())*sizeof(int)
+        + start.size()*sizeof(std::uint32_t) + entry.size()
+        + value.size()*sizeof(double);
+}
+
+
+void StoredEvaluation::Patch::columns
+(
+    std::vector<std::vector<int>>& rows,
+    std::vector<std::vector<double>>& values
+) const
+{
+    rows.assign(centre.size(), {});
+    values.assign(centre.size(), {});
+    for (std::size_t i = 0; i + 1 < start.size(); ++i)
     {
-        b += rows[e].size()*sizeof(int) + values[e].size()*sizeof(double);
+        for (std::uint32_t k = start[i]; k < start[i + 1]; ++k)
+        {
+            rows[entry[k]].push_back(int(i));
+            values[entry[k]].push_back(value[k]);
+        }
     }
-    return b;
 }
 
 
 bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
 {
+    static_assert(maxPatchColumns <= 256, "a patch entry's column in 8 bits");
     const Slot& s = slots_[k];
     std::map<std::array<double, 3>, int> columnOf;
     for (Eigen::Index j = 0; j < s.centres.rows(); ++j)
@@ -214,58 +232,87 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
 
     // the new centres' columns, alone
     const double R2 = kernel_.compact() ? kernel_.radius()*kernel_.radius() : -1;
-    std::size_t bytes = s.bytes() + slots_[1 - k].bytes() + p.column.size()*sizeof(int);
     const std::ptrdiff_t n = x_.rows();
+    std::size_t bytes =
+        s.bytes() + slots_[1 - k].bytes() + p.column.size()*sizeof(int)
+      + (n + 1)*sizeof(std::uint32_t);
+    std::vector<std::vector<int>> rows(p.centre.size());
+    std::vector<std::vector<double>> values(p.centre.size());
+    // the current patch's columns (a trial swap after another: most are kept)
+    std::vector<std::vector<int>> oldRows;
+    std::vector<std::vector<double>> oldValues;
+    if (!patch_.centre.empty())
+    {
+        patch_.columns(oldRows, oldValues);
+    }
     std::vector<double> column;
     std::vector<char> within;
-    for (const int j : p.centre)
+    for (std::size_t e = 0; e < p.centre.size(); ++e)
     {
-        // a column the current patch has (a trial swap after another): kept
-        const Patch& old = patch_;
-        std::size_t e = 0;
-        while (e < old.centre.size() && old.centres.row(old.centre[e]) != c.row(j)) ++e;
-        if (e < old.centre.size())
+        const int j = p.centre[e];
+        std::size_t o = 0;
+        while (o < oldRows.size() && patch_.centres.row(patch_.centre[o]) != c.row(j)) ++o;
+        if (o < oldRows.size())
         {
-            bytes += old.rows[e].size()*(sizeof(int) + sizeof(double));
-            if (bytes > budget)
-            {
-                return false;
-            }
-            p.rows.push_back(old.rows[e]);
-            p.values.push_back(old.values[e]);
-            continue;
+            rows[e] = std::move(oldRows[o]);
+            values[e] = std::move(oldValues[o]);
         }
-        // else the kernel at every point within R (threads), then those
-        // entries in ascending rows
-        column.resize(n);
-        within.resize(n);
-        kernel_.visit([&](const auto& phi)
+        else
         {
-            #pragma omp parallel for schedule(static) if(n >= minParallelRows)
+            // else the kernel at every point within R (threads), then
+            // those entries in ascending rows
+            column.resize(n);
+            within.resize(n);
+            kernel_.visit([&](const auto& phi)
+            {
+                #pragma omp parallel for schedule(static) if(n >= minParallelRows)
+                for (std::ptrdiff_t i = 0; i < n; ++i)
+                {
+                    const double d2 = (x_.row(i) - c.row(j)).squaredNorm();
+                    within[i] = R2 < 0 || d2 < R2;
+                    column[i] = within[i] ? phi.ofSquared(d2) : 0.0;
+                }
+            });
             for (std::ptrdiff_t i = 0; i < n; ++i)
             {
-                const double d2 = (x_.row(i) - c.row(j)).squaredNorm();
-                within[i] = R2 < 0 || d2 < R2;
-                column[i] = within[i] ? phi.ofSquared(d2) : 0.0;
-            }
-        });
-        std::vector<int> rows;
-        std::vector<double> values;
-        for (std::ptrdiff_t i = 0; i < n; ++i)
-        {
-            if (within[i])
-            {
-                rows.push_back(int(i));
-                values.push_back(column[i]);
+                if (within[i])
+                {
+                    rows[e].push_back(int(i));
+                    values[e].push_back(column[i]);
+                }
             }
         }
-        bytes += rows.size()*(sizeof(int) + sizeof(double));
+        bytes += rows[e].size()*(1 + sizeof(double));
         if (bytes > budget)
         {
             return false;
         }
-        p.rows.push_back(std::move(rows));
-        p.values.push_back(std::move(values));
+    }
+
+    // by rows: each row's entries in the order of the columns
+    std::size_t nnz = 0;
+    for (const std::vector<int>& r : rows) nnz += r.size();
+    if (nnz > std::numeric_limits<std::uint32_t>::max())
+    {
+        return false;
+    }
+    p.start.assign(n + 1, 0);
+    for (const std::vector<int>& r : rows)
+    {
+        for (const int i : r) ++p.start[i + 1];
+    }
+    std::partial_sum(p.start.begin(), p.start.end(), p.start.begin());
+    p.entry.resize(nnz);
+    p.value.resize(nnz);
+    std::vector<std::uint32_t> next(p.start.begin(), p.start.end() - 1);
+    for (std::size_t e = 0; e < rows.size(); ++e)
+    {
+        for (std::size_t m = 0; m < rows[e].size(); ++m)
+        {
+            const std::uint32_t at = next[rows[e][m]]++;
+            p.entry[at] = std::uint8_t(e);
+            p.value[at] = values[e][m];
+        }
     }
     p.centres = c;
     p.base = k;

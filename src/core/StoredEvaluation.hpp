@@ -75,7 +75,7 @@ public:
     ) const;
 
     //- Products of fewer kernel entries, patch columns of fewer rows run
-    //  on one thread
+    //  on one thread (a patch column's kernel values)
     static constexpr std::size_t minParallelEntries = std::size_t(1) << 17;
     static constexpr std::ptrdiff_t minParallelRows = 8192;
 
@@ -117,8 +117,18 @@ private:
         int base = -1;                  // the slot, -1: no patch
         std::vector<int> column;        // per centre: its slot column or -1
         std::vector<int> centre;        // the centres without one, and
-        std::vector<std::vector<int>> rows;        // their columns alone
-        std::vector<std::vector<double>> values;
+        // their columns by rows (read in the slot's pass over the rows):
+        // row i's entries [start[i], start[i + 1]), in the order of
+        // centre (entry: the index into centre)
+        std::vector<std::uint32_t> start;
+        std::vector<std::uint8_t> entry;
+        std::vector<double> value;
+        //- Each column's rows (ascending) and values
+        void columns
+        (
+            std::vector<std::vector<int>>& rows,
+            std::vector<std::vector<double>>& values
+        ) const;
         std::size_t bytes() const;
     };
 
@@ -144,7 +154,8 @@ private:
 
     //- out = K alpha + Q beta for slot s, the first C columns (the others
     //  zero); out sized. With a scatter, the rows to its targets instead
-    //  (a sparse slot)
+    //  (a sparse slot). With the patch's weights (C per patch column),
+    //  each row's patch entries added after Q beta
     template<int C>
     void product
     (
@@ -152,11 +163,12 @@ private:
         const Values& alpha,
         const Eigen::MatrixX3d& beta,
         Values& out,
-        const Scatter* scatter = nullptr
+        const Scatter* scatter,
+        const double* patchWeights
     ) const;
 
-    //- The product of slot s (patched: the shared centres' columns) into
-    //  out or to the scatter's targets
+    //- The product of slot s (patched: with the patch's columns, in the
+    //  same pass over the rows) into out or to the scatter's targets
     void productOf
     (
         const Slot& s,
@@ -165,11 +177,6 @@ private:
         Values& out,
         const Scatter* scatter = nullptr
     ) const;
-
-    //- add(row, value, weights of its centre) for each entry of the
-    //  patch's own columns, in order (threads within a long column)
-    template<class Add>
-    void addPatchColumns(const Values& alpha, const Add& add) const;
 
     RadialKernel kernel_;
     LinearPolynomial polynomial_;

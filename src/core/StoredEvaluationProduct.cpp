@@ -61,10 +61,14 @@ void StoredEvaluation::product
     const Values& alpha,
     const Eigen::MatrixX3d& beta,
     Values& out,
-    const Scatter* scatter
+    const Scatter* scatter,
+    const double* patchWeights
 ) const
 {
     const std::ptrdiff_t n = x_.rows();
+    const std::uint32_t* pStart = patchWeights ? patch_.start.data() : nullptr;
+    const std::uint8_t* pEntry = patch_.entry.data();
+    const double* pValue = patch_.value.data();
     const int P = polynomial_.size();
     const int L = int(basis_.cols());   // P - 1: Q's columns after the ones
     // alpha and beta with C columns, contiguous
@@ -116,6 +120,12 @@ void StoredEvaluation::product
         {
             for (int q = 0; q < C; ++q) v[q] += qi[p]*b[C*(p + 1) + q];
         }
+        // + the patch's columns (those of this row, in the patch's order)
+        for (std::uint32_t k = pStart ? pStart[i] : 0, end = pStart ? pStart[i + 1] : 0; k < end; ++k)
+        {
+            const double* w = patchWeights + C*pEntry[k];
+            for (int q = 0; q < C; ++q) v[q] += pValue[k]*w[q];
+        }
         if (scatter)
         {
             const Targets& t = scatter->targets;
@@ -165,16 +175,6 @@ bool StoredEvaluation::evaluateInto
     const Scatter scatter{targets, components, out};
     Values unused;
     productOf(s, alpha, beta, unused, &scatter);
-    // the patch's columns, added to each target of their rows as
-    // evaluate() adds them to the rows (the same order: the same bits)
-    addPatchColumns(alpha, [&](const std::size_t r, const double v, const double* aj)
-    {
-        for (std::size_t t = targets.start[r]; t < targets.start[r + 1]; ++t)
-        {
-            double* o = out + 3*std::size_t(targets.point[t]);
-            for (int q = 0; q < components; ++q) o[q] += v*aj[q];
-        }
-    });
     return true;
 }
 
@@ -204,35 +204,25 @@ void StoredEvaluation::productOf
     const Scatter* scatter
 ) const
 {
-    // a patched set's weights in the slot's columns
-    const Values a = patch_.base < 0 ? Values() : slotWeights(s, alpha);
-    const Values& as = patch_.base < 0 ? alpha : a;
-    if (activeColumns(alpha, beta) == 2)
+    // a patched set's weights in the slot's columns, and its own columns'
+    // weights (C contiguous per column)
+    const bool patched = patch_.base >= 0;
+    const Values a = patched ? slotWeights(s, alpha) : Values();
+    const Values& as = patched ? a : alpha;
+    const int C = activeColumns(alpha, beta);
+    std::vector<double> w(C*patch_.centre.size());
+    for (std::size_t e = 0; e < patch_.centre.size(); ++e)
     {
-        product<2>(s, as, beta, out, scatter);
+        for (int q = 0; q < C; ++q) w[C*e + q] = alpha(patch_.centre[e], q);
+    }
+    const double* pw = patched && !w.empty() ? w.data() : nullptr;
+    if (C == 2)
+    {
+        product<2>(s, as, beta, out, scatter, pw);
     }
     else
     {
-        product<3>(s, as, beta, out, scatter);
-    }
-}
-
-
-template<class Add>
-void StoredEvaluation::addPatchColumns(const Values& alpha, const Add& add) const
-{
-    for (std::size_t e = 0; e < patch_.centre.size(); ++e)
-    {
-        // a column's rows are distinct: threads for a long one
-        const double* aj = &alpha(patch_.centre[e], 0);
-        const std::vector<int>& rows = patch_.rows[e];
-        const std::vector<double>& values = patch_.values[e];
-        const std::ptrdiff_t nk = std::ptrdiff_t(rows.size());
-        #pragma omp parallel for schedule(static) if(nk >= minParallelRows)
-        for (std::ptrdiff_t k = 0; k < nk; ++k)
-        {
-            add(std::size_t(rows[k]), values[k], aj);
-        }
+        product<3>(s, as, beta, out, scatter, pw);
     }
 }
 
@@ -246,10 +236,6 @@ void StoredEvaluation::evaluate
 {
     out.resize(x_.rows(), 3);
     productOf(slots_[patch_.base < 0 ? current_ : patch_.base], alpha, beta, out);
-    addPatchColumns(alpha, [&](const std::size_t r, const double v, const double* aj)
-    {
-        for (int q = 0; q < 3; ++q) out(Eigen::Index(r), q) += v*aj[q];
-    });
 }
 
 

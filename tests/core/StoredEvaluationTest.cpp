@@ -82,27 +82,39 @@ TEST(StoredEvaluation, BitIdenticalOnOneAndTwoThreads)
     StoredEvaluation s(k, frame, x);
     ASSERT_TRUE(s.prepare(c, std::size_t(1) << 30));
     ASSERT_GE(s.bytes()/(sizeof(double) + 1), StoredEvaluation::minParallelEntries);
-    const Values alpha = test::smoothField(c);
-    const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
-    Values v1, v2;
-    // and written straight to targets (each row to point n - 1 - i)
-    StoredEvaluation::Targets t;
-    for (Eigen::Index i = 0; i <= x.rows(); ++i) t.start.push_back(std::size_t(i));
-    for (Eigen::Index i = 0; i < x.rows(); ++i) t.point.push_back(int(x.rows() - 1 - i));
-    std::vector<double> o1(3*x.rows()), o2(3*x.rows());
-    const int nThreads = omp_get_max_threads();
-    omp_set_num_threads(1);
-    s.evaluate(alpha, beta, v1);
-    ASSERT_TRUE(s.evaluateInto(alpha, beta, t, 3, o1.data()));
-    omp_set_num_threads(2);
-    s.evaluate(alpha, beta, v2);
-    ASSERT_TRUE(s.evaluateInto(alpha, beta, t, 3, o2.data()));
-    omp_set_num_threads(nThreads);
-    EXPECT_TRUE(v1 == v2);
-    EXPECT_TRUE(o1 == o2);
-    for (Eigen::Index i = 0; i < x.rows(); ++i)
+    // the set as built, then patched (three centres moved: their columns
+    // added in the same pass over the rows)
+    Points moved = c;
+    moved.row(5) = randomPoints(1, 3, 43);
+    moved.row(40) = randomPoints(1, 3, 44);
+    moved.row(79) = randomPoints(1, 3, 45);
+    for (const Points* set : std::vector<const Points*>{&c, &moved})
     {
-        for (int q = 0; q < 3; ++q) ASSERT_EQ(o1[3*(x.rows() - 1 - i) + q], v1(i, q)) << i;
+        ASSERT_TRUE(s.prepare(*set, std::size_t(1) << 30));
+        ASSERT_EQ(s.patchColumns(), set == &c ? 0 : 3);
+        const Values alpha = test::smoothField(*set);
+        const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+        Values v1, v2;
+        // and written straight to targets (each row to point n - 1 - i)
+        StoredEvaluation::Targets t;
+        for (Eigen::Index i = 0; i <= x.rows(); ++i) t.start.push_back(std::size_t(i));
+        for (Eigen::Index i = 0; i < x.rows(); ++i) t.point.push_back(int(x.rows() - 1 - i));
+        std::vector<double> o1(3*x.rows()), o2(3*x.rows());
+        const int nThreads = omp_get_max_threads();
+        omp_set_num_threads(1);
+        s.evaluate(alpha, beta, v1);
+        ASSERT_TRUE(s.evaluateInto(alpha, beta, t, 3, o1.data()));
+        omp_set_num_threads(2);
+        s.evaluate(alpha, beta, v2);
+        ASSERT_TRUE(s.evaluateInto(alpha, beta, t, 3, o2.data()));
+        omp_set_num_threads(nThreads);
+        EXPECT_TRUE(v1 == v2);
+        EXPECT_TRUE(o1 == o2);
+        for (Eigen::Index i = 0; i < x.rows(); ++i)
+        {
+            for (int q = 0; q < 3; ++q) ASSERT_EQ(o1[3*(x.rows() - 1 - i) + q], v1(i, q)) << i;
+        }
+        EXPECT_LT(storedVsEvaluator(s, k, frame, x, *set, 3), 1e-12);
     }
 }
 
