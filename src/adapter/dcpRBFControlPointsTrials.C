@@ -34,10 +34,9 @@ bool Foam::dcpRBFControlPoints::proposeSwap
     // Joining: near the worst cell, among the joinNeighbours nearest
     // candidates, the one of largest error / distance
     static const int joinNeighbours = 8;
-    const dcprbf::Values error(d - set_.evaluator().evaluate(boundary_.points()));
     const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
     const Eigen::RowVector3d x(worst[1], worst[2], worst[3]);
-    const Eigen::Index in = set_.mostInaccurateNear(x, error, joinNeighbours, 1e-9*dMax);
+    const Eigen::Index in = set_.mostInaccurateNear(x, d, joinNeighbours, 1e-9*dMax);
     if (in < 0)
     {
         return false;

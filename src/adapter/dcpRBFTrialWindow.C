@@ -20,12 +20,13 @@ Foam::labelList Foam::dcpRBFTrialWindow::lowest
 )
 {
     // the n lowest here, then the global n-th lowest of all of them
-    std::vector<scalar> sorted(q.begin(), q.end());
-    const label nLocal = max(label(0), min(n, label(sorted.size())));
-    std::partial_sort(sorted.begin(), sorted.begin() + nLocal, sorted.end());
+    std::vector<scalar> lowestHere(q.begin(), q.end());
+    const label nLocal = max(label(0), min(n, label(lowestHere.size())));
+    // (in no order: O(cells), not a partial sort's O(cells log n))
+    std::nth_element(lowestHere.begin(), lowestHere.begin() + nLocal, lowestHere.end());
 
     List<scalarList> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = scalarList(sorted.begin(), sorted.begin() + nLocal);
+    all[Pstream::myProcNo()] = scalarList(lowestHere.begin(), lowestHere.begin() + nLocal);
     Pstream::gatherList(all);
     Pstream::scatterList(all);
     std::vector<scalar> merged;

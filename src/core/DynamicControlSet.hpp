@@ -118,12 +118,13 @@ public:
     Values leaveOneOutErrors(const Values& candidateValues) const;
 
     //- Among the k non-member candidates nearest to x, the one of largest
-    //  |error| / |x_i - x| (rows: candidates) whose |error| is above floor;
-    //  else -1
+    //  |error| / |x_i - x| whose |error| is above floor; else -1. The error
+    //  of the current interpolant against these candidate values, computed
+    //  at those k alone (O(k N))
     Eigen::Index mostInaccurateNear
     (
         const Eigen::RowVector3d& x,
-        const Values& error,
+        const Values& candidateValues,
         int k,
         double floor
     ) const;

@@ -59,20 +59,29 @@ Values DynamicControlSet::leaveOneOutErrors(const Values& candidateValues) const
 Eigen::Index DynamicControlSet::mostInaccurateNear
 (
     const Eigen::RowVector3d& x,
-    const Values& error,
+    const Values& candidateValues,
     int k,
     double floor
 ) const
 {
+    if (candidateValues.rows() != candidates_.rows())
+    {
+        throw Error("mostInaccurateNear: values must be given at every candidate");
+    }
     std::vector<Eigen::Index> all(candidates_.rows());
     std::iota(all.begin(), all.end(), 0);
-    const std::vector<Eigen::Index> near =
+    std::vector<Eigen::Index> near =
         nearestFirst(x, all, [&](Eigen::Index j) { return !inSet_[j]; });
+    near.resize(std::min(near.size(), std::size_t(std::max(k, 0))));
+    // the interpolant at those candidates alone
+    Points at(near.size(), 3);
+    for (std::size_t r = 0; r < near.size(); ++r) at.row(r) = candidates_.row(near[r]);
+    const Values s = evaluator_.evaluate(at);
     Eigen::Index best = -1;
     double bestScore = 0;
-    for (std::size_t r = 0; r < near.size() && r < std::size_t(k); ++r)
+    for (std::size_t r = 0; r < near.size(); ++r)
     {
-        const double e = error.row(near[r]).norm();
+        const double e = (candidateValues.row(near[r]) - s.row(r)).norm();
         const double d = (candidates_.row(near[r]) - x).norm();
         const double score = e/std::max(d, 1e-300);
         if (e > floor && score > bestScore)

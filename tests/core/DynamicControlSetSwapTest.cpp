@@ -130,8 +130,10 @@ TEST_F(SwapFixture, JoinsTheWorstOfTheNearestAndLeavesTheCheapest)
         if (score > best) { best = score; expected = byDistance[r].second; }
         largest = std::max(largest, e);
     }
-    EXPECT_EQ(s.mostInaccurateNear(x, error, kNear, 0.0), expected);
-    EXPECT_EQ(s.mostInaccurateNear(x, error, kNear, largest), -1);   // nothing above the floor
+    EXPECT_EQ(s.mostInaccurateNear(x, v, kNear, 0.0), expected);
+    // nothing above the floor (the errors as above to a few ulps)
+    EXPECT_EQ(s.mostInaccurateNear(x, v, kNear, largest*(1 + 1e-9)), -1);
+    EXPECT_THROW(s.mostInaccurateNear(x, v.topRows(3), kNear, 0.0), Error);
 
     const Values loo = s.leaveOneOutErrors(v);
     const std::vector<Index> order = s.removalOrder(loo);
