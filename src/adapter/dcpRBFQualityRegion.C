@@ -98,27 +98,31 @@ Foam::labelList Foam::dcpRBFQualityRegion::within
     const scalar radius
 ) const
 {
-    DynamicList<label> positions;
-    if (!tree_ && centres_.size())
+    // the centres are a flat array of 3 scalars each, in Morton order
+    static_assert
+    (
+        sizeof(FixedList<scalar, 3>) == 3*sizeof(scalar),
+        "centres as a flat array"
+    );
+    if (!index_)
     {
-        dcprbf::Points c(centres_.size(), 3);
-        forAll(centres_, i)
-        {
-            c.row(i) << centres_[i][0], centres_[i][1], centres_[i][2];
-        }
-        tree_.reset(new dcprbf::PointTree(c));
-    }
-    if (tree_ && tree_->size())
-    {
-        tree_->forEachWithin
+        index_.reset
         (
-            x.data(), radius,
-            [&](std::size_t i, double) { positions.append(label(i)); }
+            new dcprbf::BlockBoxIndex
+            (
+                centres_.size() ? centres_[0].cdata() : nullptr,
+                std::size_t(centres_.size())
+            )
         );
     }
-    labelList l(std::move(positions));
-    Foam::sort(l);
-    return l;
+    // found in ascending positions
+    DynamicList<label> positions;
+    index_->forEachWithin
+    (
+        x.data(), radius,
+        [&](std::size_t i, double) { positions.append(label(i)); }
+    );
+    return labelList(std::move(positions));
 }
 
 

@@ -206,4 +206,66 @@ TEST(QualityRegion, MixedPolygonAndDecomposedCellsEqualCellQuality2D)
     EXPECT_LT(min(ref), 1 - 1e-3);
 }
 
+
+// within(x, r): the region's positions whose reference centre is strictly
+// within r of x, ascending, as a brute-force search finds them; and a few of
+// the region's cells measured on their own (a trial window's part: its faces
+// numbered by a hash table, not by an array over the mesh's faces) have the
+// region's values, bit for bit
+TEST(QualityRegion, WithinAndAFewCellsOnTheirOwn)
+{
+    testCase c(3, 10, "movingPatches (bottom); staticPatches (top); supportRadius 1;");
+    const polyMesh& mesh = c.mesh();
+    const pointField p0(mesh.points());
+    const dcpRBFPlaneProjection projection(mesh);
+    const polyPatch& bottom = mesh.boundaryMesh()[mesh.boundaryMesh().findPatchID("bottom")];
+    const dcprbf::Points moving(projection.toCore(pointField(bottom.localPoints())));
+    const dcpRBFQualityRegion region
+    (
+        mesh, projection, p0, moving, 2, dcprbf::TetQuality::Metric::sizeShape
+    );
+    const List<FixedList<scalar, 3>>& centres = region.centres();
+    ASSERT_EQ(centres.size(), mesh.nCells());
+
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<scalar> u(-0.1, 1.1);
+    for (int k = 0; k < 20; ++k)
+    {
+        const Eigen::RowVector3d x(u(gen), u(gen), u(gen));
+        for (const scalar r : {0.0, 0.05, 0.2, 0.6})
+        {
+            labelList expected;
+            forAll(centres, i)
+            {
+                const scalar d0 = centres[i][0] - x(0);
+                const scalar d1 = centres[i][1] - x(1);
+                const scalar d2 = centres[i][2] - x(2);
+                if (d0*d0 + d1*d1 + d2*d2 < r*r) expected.append(i);
+            }
+            EXPECT_EQ(region.within(x, r), expected) << "r " << r;
+        }
+    }
+
+    // 12 of the region's cells (positions 7, 90, ...) on their own
+    pointField p(p0);
+    forAll(p, i)
+    {
+        p[i] += vector(0.03*std::sin(9*p0[i].y()), 0.02*std::cos(7*p0[i].z()), 0.02*p0[i].x());
+    }
+    const scalarField all(region.quality(p));
+    labelList positions, cells;
+    for (label i = 7; positions.size() < 12; i += 83)
+    {
+        positions.append(i);
+        cells.append(region.cells()[i]);
+    }
+    const dcpRBFCellQuality few(mesh, cells, p0, dcprbf::TetQuality::Metric::sizeShape);
+    const scalarField q(few.compute(p));
+    ASSERT_EQ(q.size(), positions.size());
+    forAll(q, k)
+    {
+        EXPECT_EQ(q[k], all[positions[k]]) << "cell " << cells[k];
+    }
+}
+
 } // namespace
