@@ -7,6 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFTrialWindow.H"
+#include "SmallestValues.hpp"
 
 #include <algorithm>
 #include <iterator>
@@ -19,14 +20,15 @@ Foam::labelList Foam::dcpRBFTrialWindow::lowest
     const label n
 )
 {
-    // the n lowest here, then the global n-th lowest of all of them
-    std::vector<scalar> lowestHere(q.begin(), q.end());
-    const label nLocal = max(label(0), min(n, label(lowestHere.size())));
-    // (in no order: O(cells), not a partial sort's O(cells log n))
-    std::nth_element(lowestHere.begin(), lowestHere.begin() + nLocal, lowestHere.end());
+    // the n lowest here (in no order), then the global n-th lowest of all
+    const label nLocal = max(label(0), min(n, q.size()));
+    const std::vector<scalar> lowestHere
+    (
+        dcprbf::smallestValues(q.cdata(), std::size_t(q.size()), std::size_t(nLocal))
+    );
 
     List<scalarList> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = scalarList(lowestHere.begin(), lowestHere.begin() + nLocal);
+    all[Pstream::myProcNo()] = scalarList(lowestHere.begin(), lowestHere.end());
     Pstream::gatherList(all);
     Pstream::scatterList(all);
     std::vector<scalar> merged;
