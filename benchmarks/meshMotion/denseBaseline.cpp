@@ -167,6 +167,7 @@ int main(int argc, char** argv)
         return 1;
     }
     const double sparseBuild = now() - t0;
+    const std::size_t sparseBytes = stored.bytes();     // before any patch
     Values sSparse(n, 3);
     for (int r = 0; r < repeats; ++r)
     {
@@ -204,7 +205,7 @@ int main(int argc, char** argv)
     std::printf("denseBytes %.0f\ndenseBuild %.6f\ndenseProduct %.6e\n",
         double(K.size() + Q.size())*sizeof(double), denseBuild, median(tDense));
     std::printf("sparseBytes %.0f\nsparseBuild %.6f\nsparseProduct %.6e\n",
-        double(stored.bytes() + Q.size()*sizeof(double)), sparseBuild, median(tSparse));
+        double(sparseBytes + Q.size()*sizeof(double)), sparseBuild, median(tSparse));
     for (const auto& kt : tPatched)
     {
         std::printf("sparsePatched%dProduct %.6e\n", kt.first, kt.second);

@@ -76,7 +76,7 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
     {
         for (const label facei : mesh.cells()[celli])
         {
-            label c = few ? (compactOf.found(facei) ? compactOf[facei] : -1) : compact[facei];
+            label c = few ? compactOf.lookup(facei, -1) : compact[facei];
             if (c < 0)
             {
                 c = label(faceStart.size()) - 1;

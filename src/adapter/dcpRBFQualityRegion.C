@@ -110,7 +110,7 @@ Foam::labelList Foam::dcpRBFQualityRegion::within
         (
             new dcprbf::BlockBoxIndex
             (
-                centres_.size() ? centres_[0].cdata() : nullptr,
+                reinterpret_cast<const scalar*>(centres_.cdata()),
                 std::size_t(centres_.size())
             )
         );

@@ -117,10 +117,10 @@ public:
     //  the interpolant of these candidate values. O(N^3/3).
     Values leaveOneOutErrors(const Values& candidateValues) const;
 
-    //- Among the k non-member candidates nearest to x, the one of largest
-    //  |error| / |x_i - x| whose |error| is above floor; else -1. The error
-    //  of the current interpolant against these candidate values, computed
-    //  at those k alone (O(k N))
+    //- Among the k (at most maxTries) non-member candidates nearest to x,
+    //  the one of largest |error| / |x_i - x| whose |error| is above floor;
+    //  else -1. The error of the current interpolant against these
+    //  candidate values, computed at those k alone (O(k N))
     Eigen::Index mostInaccurateNear
     (
         const Eigen::RowVector3d& x,

@@ -233,27 +233,39 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
     // the new centres' columns, alone
     const double R2 = kernel_.compact() ? kernel_.radius()*kernel_.radius() : -1;
     const std::ptrdiff_t n = x_.rows();
+    // (the rows' starts only for new columns: a patch that only removes
+    // centres has none)
     std::size_t bytes =
         s.bytes() + slots_[1 - k].bytes() + p.column.size()*sizeof(int)
-      + (n + 1)*sizeof(std::uint32_t);
+      + (p.centre.empty() ? 0 : (n + 1)*sizeof(std::uint32_t));
     std::vector<std::vector<int>> rows(p.centre.size());
     std::vector<std::vector<double>> values(p.centre.size());
     // the current patch's columns (a trial swap after another: most are kept)
     std::vector<std::vector<int>> oldRows;
     std::vector<std::vector<double>> oldValues;
-    if (!patch_.centre.empty())
+    if (!patch_.centre.empty() && !p.centre.empty())
     {
         patch_.columns(oldRows, oldValues);
     }
+    std::vector<char> taken(oldRows.size(), 0);
     std::vector<double> column;
     std::vector<char> within;
     for (std::size_t e = 0; e < p.centre.size(); ++e)
     {
         const int j = p.centre[e];
         std::size_t o = 0;
-        while (o < oldRows.size() && patch_.centres.row(patch_.centre[o]) != c.row(j)) ++o;
+        while
+        (
+            o < oldRows.size()
+         && (taken[o] || patch_.centres.row(patch_.centre[o]) != c.row(j))
+        )
+        {
+            ++o;
+        }
         if (o < oldRows.size())
         {
+            // (each old column moved once: a centre given twice is computed)
+            taken[o] = 1;
             rows[e] = std::move(oldRows[o]);
             values[e] = std::move(oldValues[o]);
         }
@@ -296,22 +308,25 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
     {
         return false;
     }
-    p.start.assign(n + 1, 0);
-    for (const std::vector<int>& r : rows)
+    if (!p.centre.empty())
     {
-        for (const int i : r) ++p.start[i + 1];
-    }
-    std::partial_sum(p.start.begin(), p.start.end(), p.start.begin());
-    p.entry.resize(nnz);
-    p.value.resize(nnz);
-    std::vector<std::uint32_t> next(p.start.begin(), p.start.end() - 1);
-    for (std::size_t e = 0; e < rows.size(); ++e)
-    {
-        for (std::size_t m = 0; m < rows[e].size(); ++m)
+        p.start.assign(n + 1, 0);
+        for (const std::vector<int>& r : rows)
         {
-            const std::uint32_t at = next[rows[e][m]]++;
-            p.entry[at] = std::uint8_t(e);
-            p.value[at] = values[e][m];
+            for (const int i : r) ++p.start[i + 1];
+        }
+        std::partial_sum(p.start.begin(), p.start.end(), p.start.begin());
+        p.entry.resize(nnz);
+        p.value.resize(nnz);
+        std::vector<std::uint32_t> next(p.start.begin(), p.start.end() - 1);
+        for (std::size_t e = 0; e < rows.size(); ++e)
+        {
+            for (std::size_t m = 0; m < rows[e].size(); ++m)
+            {
+                const std::uint32_t at = next[rows[e][m]]++;
+                p.entry[at] = std::uint8_t(e);
+                p.value[at] = values[e][m];
+            }
         }
     }
     p.centres = c;

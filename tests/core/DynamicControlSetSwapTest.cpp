@@ -134,6 +134,18 @@ TEST_F(SwapFixture, JoinsTheWorstOfTheNearestAndLeavesTheCheapest)
     // nothing above the floor (the errors as above to a few ulps)
     EXPECT_EQ(s.mostInaccurateNear(x, v, kNear, largest*(1 + 1e-9)), -1);
     EXPECT_THROW(s.mostInaccurateNear(x, v.topRows(3), kNear, 0.0), Error);
+    // k 0: none; k beyond the non-members: the best of the maxTries
+    // nearest (the search's cap)
+    EXPECT_EQ(s.mostInaccurateNear(x, v, 0, 0.0), -1);
+    Index bestOfAll = -1;
+    double bestAll = 0;
+    for (std::size_t r = 0; r < byDistance.size() && r < std::size_t(o.maxTries); ++r)
+    {
+        const auto& di = byDistance[r];
+        const double score = error.row(di.second).norm()/std::sqrt(di.first);
+        if (score > bestAll) { bestAll = score; bestOfAll = di.second; }
+    }
+    EXPECT_EQ(s.mostInaccurateNear(x, v, int(cand.rows()) + 5, 0.0), bestOfAll);
 
     const Values loo = s.leaveOneOutErrors(v);
     const std::vector<Index> order = s.removalOrder(loo);

@@ -324,6 +324,13 @@ TEST_P(StoredCase, PatchedSetsEqualTheEvaluator)
     union_ << swapped, extra.middleRows(2, 4);
     check(union_, 6, 1, "union");
 
+    Points once(base.rows() + 1, 3);       // a centre added, then given twice:
+    once << base, extra.row(7);            // the second copy's column is
+    check(once, 1, 1, "added once");       // computed, the first one's kept
+    Points twice(base.rows() + 2, 3);
+    twice << base, extra.row(7), extra.row(7);
+    check(twice, 2, 1, "added twice");
+
     Points many = base;                    // too many: a build
     many.topRows(StoredEvaluation::maxPatchColumns + 1) =
         extra.topRows(StoredEvaluation::maxPatchColumns + 1);

@@ -246,25 +246,29 @@ TEST(QualityRegion, WithinAndAFewCellsOnTheirOwn)
         }
     }
 
-    // 12 of the region's cells (positions 7, 90, ...) on their own
+    // 12 of the region's cells (positions 7, 90, ...) on their own, and
+    // 12 neighbours (positions 40-51: Morton order, faces shared)
     pointField p(p0);
     forAll(p, i)
     {
         p[i] += vector(0.03*std::sin(9*p0[i].y()), 0.02*std::cos(7*p0[i].z()), 0.02*p0[i].x());
     }
     const scalarField all(region.quality(p));
-    labelList positions, cells;
-    for (label i = 7; positions.size() < 12; i += 83)
+    for (const label step : {83, 1})
     {
-        positions.append(i);
-        cells.append(region.cells()[i]);
-    }
-    const dcpRBFCellQuality few(mesh, cells, p0, dcprbf::TetQuality::Metric::sizeShape);
-    const scalarField q(few.compute(p));
-    ASSERT_EQ(q.size(), positions.size());
-    forAll(q, k)
-    {
-        EXPECT_EQ(q[k], all[positions[k]]) << "cell " << cells[k];
+        labelList positions, cells;
+        for (label i = step == 1 ? 40 : 7; positions.size() < 12; i += step)
+        {
+            positions.append(i);
+            cells.append(region.cells()[i]);
+        }
+        const dcpRBFCellQuality few(mesh, cells, p0, dcprbf::TetQuality::Metric::sizeShape);
+        const scalarField q(few.compute(p));
+        ASSERT_EQ(q.size(), positions.size());
+        forAll(q, k)
+        {
+            EXPECT_EQ(q[k], all[positions[k]]) << "cell " << cells[k];
+        }
     }
 }
 
