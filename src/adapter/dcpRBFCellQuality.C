@@ -106,6 +106,32 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
 }
 
 
+Foam::dcpRBFCellQuality::dcpRBFCellQuality
+(
+    const dcpRBFCellQuality& from,
+    const labelUList& positions
+)
+:
+    mesh_(from.mesh_),
+    metric_(from.metric_),
+    nCells_(positions.size()),
+    scanned_(identity(positions.size()))
+{
+    if (!from.subsettable())
+    {
+        FatalErrorInFunction
+            << "A subset of cells measured from 2D polygons" << abort(FatalError);
+    }
+    scan_.reset
+    (
+        new dcprbf::CellQualityScan
+        (
+            *from.scan_, std::vector<int>(positions.begin(), positions.end())
+        )
+    );
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 std::vector<Eigen::Vector3d> Foam::dcpRBFCellQuality::faceCentres

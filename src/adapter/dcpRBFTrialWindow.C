@@ -65,9 +65,14 @@ void Foam::dcpRBFTrialWindow::append(labelList&& positions)
         merged.begin()
     );
     positions_.transfer(merged);
+    // the region's classified cells copied (3D), or the cells from the mesh
+    // (2D polygons)
+    const dcpRBFCellQuality& all = region_.cellQuality();
     scans_.append
     (
-        new dcpRBFCellQuality
+        all.subsettable()
+      ? new dcpRBFCellQuality(all, positions)
+      : new dcpRBFCellQuality
         (
             mesh_, labelList(labelUIndList(region_.cells(), positions)),
             points0_, metric_

@@ -347,6 +347,44 @@ TEST(CellQualityScan, RepeatedMeasurementsEqualAFreshScans)
 }
 
 
+TEST(CellQualityScan, ASubsetMeasuresItsCellsAsTheWholeScan)
+{
+    // some of a mixed scan's cells (hexahedra, tetrahedra, prisms; in no
+    // order, over several blocks), and a subset of that subset: each cell's
+    // value is the whole scan's, bit for bit; a cell given twice or out of
+    // range is refused
+    const HexBlock b(12, HexBlock::Split::mixed);
+    const std::vector<double> p(deformed(b.points, 0.35, 41));
+    const CellQualityScan whole(b.scan(TetQuality::Metric::sizeShape));
+    std::vector<double> all(whole.size());
+    whole.measure(p.data(), all.data());
+    std::vector<int> cells;
+    for (int i = int(whole.size()) - 2; i >= 0; i -= 7) cells.push_back(i);
+    for (int i = 0; i < 60; i += 7) cells.push_back(i);     // (the others: 2 mod 7)
+    const CellQualityScan some(whole, cells);
+    ASSERT_EQ(some.size(), cells.size());
+    std::vector<double> q(some.size());
+    some.measure(p.data(), q.data());
+    for (std::size_t k = 0; k < cells.size(); ++k)
+    {
+        ASSERT_EQ(q[k], all[std::size_t(cells[k])]) << "cell " << cells[k];
+    }
+    EXPECT_LT(*std::min_element(q.begin(), q.end()), 0.0);    // inverted ones among them
+
+    const std::vector<int> again{5, 0, 17, 3};
+    const CellQualityScan fewer(some, again);
+    std::vector<double> r(fewer.size());
+    fewer.measure(p.data(), r.data());
+    for (std::size_t k = 0; k < again.size(); ++k)
+    {
+        EXPECT_EQ(r[k], q[std::size_t(again[k])]);
+    }
+    EXPECT_THROW(CellQualityScan(whole, std::vector<int>{3, 9, 3}), std::invalid_argument);
+    EXPECT_THROW(CellQualityScan(whole, std::vector<int>{int(whole.size())}), std::invalid_argument);
+    EXPECT_EQ(CellQualityScan(whole, std::vector<int>{}).size(), 0u);
+}
+
+
 TEST(CellQualityScan, RefusesInconsistentRows)
 {
     const double p0[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};

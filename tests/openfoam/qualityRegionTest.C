@@ -40,6 +40,8 @@ void compareScans(const label dim, const scalar radius)
     {
         const dcpRBFQualityRegion region(mesh, projection, p0, moving, radius, metric);
         ASSERT_GT(region.cells().size(), 0);
+        // 2D cells are measured from their polygons: no subsets of the scan
+        EXPECT_EQ(region.cellQuality().subsettable(), dim == 3);
         if (radius < 1)
         {
             ASSERT_LT(region.cells().size(), mesh.nCells());
@@ -210,8 +212,8 @@ TEST(QualityRegion, MixedPolygonAndDecomposedCellsEqualCellQuality2D)
 // within(x, r): the region's positions whose reference centre is strictly
 // within r of x, ascending, as a brute-force search finds them; and a few of
 // the region's cells measured on their own (a trial window's part: its faces
-// numbered by a hash table, not by an array over the mesh's faces) have the
-// region's values, bit for bit
+// numbered by a hash table, not by an array over the mesh's faces; or copied
+// from the region's scan) have the region's values, bit for bit
 TEST(QualityRegion, WithinAndAFewCellsOnTheirOwn)
 {
     testCase c(3, 10, "movingPatches (bottom); staticPatches (top); supportRadius 1;");
@@ -269,6 +271,10 @@ TEST(QualityRegion, WithinAndAFewCellsOnTheirOwn)
         {
             EXPECT_EQ(q[k], all[positions[k]]) << "cell " << cells[k];
         }
+        // and copied from the region's scan (a trial window's part in 3D)
+        ASSERT_TRUE(region.cellQuality().subsettable());
+        const dcpRBFCellQuality copied(region.cellQuality(), positions);
+        EXPECT_EQ(copied.compute(p), q);
     }
 }
 
