@@ -218,8 +218,19 @@ void SaddleFactorization::solveFactored
 
 Eigen::VectorXd SaddleFactorization::inverseDiagonal() const
 {
-    Eigen::MatrixXd Z = Eigen::MatrixXd::Identity(n_, n_);
-    L_.solveLowerInPlace(Z);
+    // Z = L^{-1}, lower triangular: each block of columns from its own
+    // diagonal down (N^3/6 flops, not the N^3/2 of a solve with the whole
+    // identity; N = 289: 1.2 -> 0.5 ms)
+    constexpr Eigen::Index block = 32;
+    Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(n_, n_);
+    const auto L = L_.matrixL();
+    for (Eigen::Index j0 = 0; j0 < n_; j0 += block)
+    {
+        const Eigen::Index jb = std::min(block, n_ - j0), m = n_ - j0;
+        auto Zb = Z.block(j0, j0, m, jb);
+        Zb.topRows(jb).setIdentity();
+        L.block(j0, j0, m, m).triangularView<Eigen::Lower>().solveInPlace(Zb);
+    }
     Eigen::VectorXd b = Z.colwise().squaredNorm().transpose();
     if (W_.cols() > 0 && n_ > 0)
     {

@@ -72,6 +72,32 @@ TEST_P(LeaveOneOut, EqualsBruteForceRemoval)
     }
 }
 
+// The same over 100 centres: the inverse factor's diagonal is computed in
+// blocks of 32 columns (the centres at and around the blocks' edges)
+TEST(LeaveOneOut, OverSeveralBlocksEqualsBruteForceRemoval)
+{
+    const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.6);
+    const Points cand = randomPoints(300, 3, 5);
+    const Values v = fieldFor(cand, 3);
+    DynamicControlSet s = makeSet(cand, k, true, 3);
+    s.reset(everyThird(cand.rows()));
+    ASSERT_EQ(s.size(), 100);
+    const Values loo = s.leaveOneOutErrors(v);
+    const double scale = v.cwiseAbs().maxCoeff();
+    for (const Index j : {0, 1, 31, 32, 33, 63, 64, 95, 96, 99})
+    {
+        std::vector<Index> rest(s.indices());
+        const Index left = rest[j];
+        rest.erase(rest.begin() + j);
+        DynamicControlSet without = makeSet(cand, k, true, 3);
+        without.reset(rest);
+        without.solve(v);
+        const Values sj = without.evaluator().evaluate(cand.row(left));
+        const Eigen::RowVector3d brute = v.row(left) - sj.row(0);
+        EXPECT_LT((loo.row(j) - brute).norm(), 1e-7*scale + 1e-6*brute.norm()) << "centre " << j;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(KernelsPolyDim, LeaveOneOut, ::testing::ValuesIn(test::kernelCases()),
     test::kernelCaseName);
 
