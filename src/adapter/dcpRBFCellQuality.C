@@ -9,7 +9,6 @@ License
 #include "dcpRBFCellQuality.H"
 #include "dcpRBFPlanarCells.H"
 #include "TetQuality.hpp"
-#include "Map.H"
 
 namespace
 {
@@ -62,36 +61,24 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
     }
     scanned_ = sorted.others();
 
-    // The other cells' faces, each once, numbered in order of appearance:
-    // by an array over the mesh's faces, or for a few cells (a trial
-    // window's part) by a hash table (the array cost ~40 ms a part on a
-    // 10M-cell mesh, whatever its size)
+    // The other cells' faces, each once, numbered in order of appearance
+    // (a trial window's parts in 3D are copied from the region's scan
+    // instead: dcpRBFCellQuality(from, positions))
     const faceList& faces = mesh.faces();
-    const bool few = 8*scanned_.size() < faces.size()/16;
-    labelList compact(few ? 0 : faces.size(), -1);
-    Map<label> compactOf(few ? 8*scanned_.size() : 0);
+    labelList compact(faces.size(), -1);
     std::vector<std::size_t> cellStart(1, 0), faceStart(1, 0);
     std::vector<int> cellFaces, facePoints;
     for (const label celli : labelUIndList(cells, scanned_))
     {
         for (const label facei : mesh.cells()[celli])
         {
-            label c = few ? compactOf.lookup(facei, -1) : compact[facei];
-            if (c < 0)
+            if (compact[facei] < 0)
             {
-                c = label(faceStart.size()) - 1;
-                if (few)
-                {
-                    compactOf.insert(facei, c);
-                }
-                else
-                {
-                    compact[facei] = c;
-                }
+                compact[facei] = label(faceStart.size()) - 1;
                 facePoints.insert(facePoints.end(), faces[facei].begin(), faces[facei].end());
                 faceStart.push_back(facePoints.size());
             }
-            cellFaces.push_back(c);
+            cellFaces.push_back(compact[facei]);
         }
         cellStart.push_back(cellFaces.size());
     }

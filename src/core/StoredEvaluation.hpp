@@ -74,8 +74,8 @@ public:
         double* out
     ) const;
 
-    //- Products of fewer kernel entries, patch columns of fewer rows run
-    //  on one thread (a patch column's kernel values)
+    //- Products of fewer kernel entries run on one thread, and a patch
+    //  column's kernel values over fewer rows
     static constexpr std::size_t minParallelEntries = std::size_t(1) << 17;
     static constexpr std::ptrdiff_t minParallelRows = 8192;
 

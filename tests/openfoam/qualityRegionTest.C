@@ -41,7 +41,16 @@ void compareScans(const label dim, const scalar radius)
         const dcpRBFQualityRegion region(mesh, projection, p0, moving, radius, metric);
         ASSERT_GT(region.cells().size(), 0);
         // 2D cells are measured from their polygons: no subsets of the scan
+        // (asked for one: an error, not a wrong scan)
         EXPECT_EQ(region.cellQuality().subsettable(), dim == 3);
+        if (dim == 2)
+        {
+            EXPECT_THROW
+            (
+                dcpRBFCellQuality(region.cellQuality(), labelList({0, 1})),
+                Foam::error
+            );
+        }
         if (radius < 1)
         {
             ASSERT_LT(region.cells().size(), mesh.nCells());
@@ -211,9 +220,9 @@ TEST(QualityRegion, MixedPolygonAndDecomposedCellsEqualCellQuality2D)
 
 // within(x, r): the region's positions whose reference centre is strictly
 // within r of x, ascending, as a brute-force search finds them; and a few of
-// the region's cells measured on their own (a trial window's part: its faces
-// numbered by a hash table, not by an array over the mesh's faces; or copied
-// from the region's scan) have the region's values, bit for bit
+// the region's cells measured on their own (a trial window's part: built from
+// the mesh, or copied from the region's scan) have the region's values, bit
+// for bit
 TEST(QualityRegion, WithinAndAFewCellsOnTheirOwn)
 {
     testCase c(3, 10, "movingPatches (bottom); staticPatches (top); supportRadius 1;");
