@@ -63,15 +63,17 @@ public:
     //- evaluate()'s values, bit for bit, written straight to their
     //  targets in out (the first `components` of each, the others 0;
     //  nothing else written): no pass over the rows after the product.
-    //  For a stored sparse matrix, patched or not; false, nothing
-    //  written, for a dense one
+    //  With rows, those rows alone (a trial judged on a few cells: the
+    //  same values there, at a fraction of the cost). For a stored sparse
+    //  matrix, patched or not; false, nothing written, for a dense one
     bool evaluateInto
     (
         const Values& alpha,
         const Eigen::MatrixX3d& beta,
         const Targets& targets,
         int components,
-        double* out
+        double* out,
+        const std::vector<int>* rows = nullptr
     ) const;
 
     //- Products of fewer kernel entries run on one thread, and a patch
@@ -155,7 +157,8 @@ private:
     //- out = K alpha + Q beta for slot s, the first C columns (the others
     //  zero); out sized. With a scatter, the rows to its targets instead
     //  (a sparse slot). With the patch's weights (C per patch column),
-    //  each row's patch entries added after Q beta
+    //  each row's patch entries added after Q beta. With rows (and a
+    //  scatter), only those rows
     template<int C>
     void product
     (
@@ -164,7 +167,8 @@ private:
         const Eigen::MatrixX3d& beta,
         Values& out,
         const Scatter* scatter,
-        const double* patchWeights
+        const double* patchWeights,
+        const std::vector<int>* rows
     ) const;
 
     //- The product of slot s (patched: with the patch's columns, in the
@@ -175,7 +179,8 @@ private:
         const Values& alpha,
         const Eigen::MatrixX3d& beta,
         Values& out,
-        const Scatter* scatter = nullptr
+        const Scatter* scatter = nullptr,
+        const std::vector<int>* rows = nullptr
     ) const;
 
     RadialKernel kernel_;

@@ -62,10 +62,13 @@ void StoredEvaluation::product
     const Eigen::MatrixX3d& beta,
     Values& out,
     const Scatter* scatter,
-    const double* patchWeights
+    const double* patchWeights,
+    const std::vector<int>* rows
 ) const
 {
-    const std::ptrdiff_t n = x_.rows();
+    // every row, or the rows listed (the same operations on each row)
+    const std::ptrdiff_t n = rows ? std::ptrdiff_t(rows->size()) : x_.rows();
+    const int* row = rows ? rows->data() : nullptr;
     const std::uint32_t* pStart = patchWeights ? patch_.start.data() : nullptr;
     const std::uint8_t* pEntry = patch_.entry.data();
     const double* pValue = patch_.value.data();
@@ -89,9 +92,11 @@ void StoredEvaluation::product
     // error at the candidates) costs microseconds, waking a sleeping
     // thread up to a few hundred
     const std::size_t entries = s.dense.size() ? s.dense.size() : s.values.size();
-    #pragma omp parallel for schedule(static) if(entries >= minParallelEntries)
-    for (std::ptrdiff_t i = 0; i < n; ++i)
+    const bool threads = rows ? n >= minParallelRows : entries >= minParallelEntries;
+    #pragma omp parallel for schedule(static) if(threads)
+    for (std::ptrdiff_t r = 0; r < n; ++r)
     {
+        const std::ptrdiff_t i = row ? row[r] : r;
         double v[3] = {0, 0, 0};
         if (s.dense.size())
         {
@@ -151,7 +156,8 @@ bool StoredEvaluation::evaluateInto
     const Eigen::MatrixX3d& beta,
     const Targets& targets,
     const int components,
-    double* out
+    double* out,
+    const std::vector<int>* rows
 ) const
 {
     if (targets.start.size() != std::size_t(x_.rows()) + 1)
@@ -162,6 +168,17 @@ bool StoredEvaluation::evaluateInto
           + std::to_string(targets.start.size() - 1) + " rows, the matrix has "
           + std::to_string(x_.rows())
         );
+    }
+    for (std::size_t k = 0; rows && k < rows->size(); ++k)
+    {
+        if ((*rows)[k] < 0 || (*rows)[k] >= x_.rows())
+        {
+            throw Error
+            (
+                "StoredEvaluation::evaluateInto: row " + std::to_string((*rows)[k])
+              + " of a matrix of " + std::to_string(x_.rows()) + " rows"
+            );
+        }
     }
     if (current_ < 0 && patch_.base < 0)
     {
@@ -174,7 +191,7 @@ bool StoredEvaluation::evaluateInto
     }
     const Scatter scatter{targets, components, out};
     Values unused;
-    productOf(s, alpha, beta, unused, &scatter);
+    productOf(s, alpha, beta, unused, &scatter, rows);
     return true;
 }
 
@@ -201,7 +218,8 @@ void StoredEvaluation::productOf
     const Values& alpha,
     const Eigen::MatrixX3d& beta,
     Values& out,
-    const Scatter* scatter
+    const Scatter* scatter,
+    const std::vector<int>* rows
 ) const
 {
     // a patched set's weights in the slot's columns, and its own columns'
@@ -218,11 +236,11 @@ void StoredEvaluation::productOf
     const double* pw = patched && !w.empty() ? w.data() : nullptr;
     if (C == 2)
     {
-        product<2>(s, as, beta, out, scatter, pw);
+        product<2>(s, as, beta, out, scatter, pw, rows);
     }
     else
     {
-        product<3>(s, as, beta, out, scatter, pw);
+        product<3>(s, as, beta, out, scatter, pw, rows);
     }
 }
 

@@ -283,6 +283,97 @@ TEST(StoredEvaluation, EvaluateIntoWritesEachRowToItsTargets)
     EXPECT_TRUE(std::all_of(out.begin(), out.end(), [](double v) { return v == 7.0; }));
 }
 
+// evaluateInto with rows writes those rows' values alone, bit for bit the
+// whole product's (plain and patched sets, 2 and 3 columns, on 1 and 2
+// threads: more rows than minParallelRows), and nothing else; a row out of
+// range is an error, a dense matrix refused
+TEST(StoredEvaluation, EvaluateIntoRowsWritesThoseRowsAlone)
+{
+    const LinearPolynomial frame(true, 3);
+    const Eigen::Index n = StoredEvaluation::minParallelRows + 2000;
+    const Points x = randomPoints(n, 3, 61);
+    const Points c = randomPoints(60, 3, 62);
+    const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.3);
+    StoredEvaluation s(k, frame, x);
+    ASSERT_TRUE(s.prepare(c, std::size_t(1) << 30));
+    Values alpha = test::smoothField(c);
+    const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+
+    // row i to point n - 1 - i; the rows: those not divisible by 7, descending
+    StoredEvaluation::Targets t;
+    t.start.push_back(0);
+    for (Eigen::Index i = 0; i < n; ++i)
+    {
+        t.point.push_back(int(n - 1 - i));
+        t.start.push_back(t.point.size());
+    }
+    std::vector<int> rows;
+    for (Eigen::Index i = n - 1; i >= 0; --i)
+    {
+        if (i % 7) rows.push_back(int(i));
+    }
+    ASSERT_GE(std::ptrdiff_t(rows.size()), StoredEvaluation::minParallelRows);
+    const double sentinel = std::numeric_limits<double>::quiet_NaN();
+    const auto check = [&](const Values& a, const char* what)
+    {
+        for (const int threads : {1, 2})
+        {
+            const int nThreads = omp_get_max_threads();
+            omp_set_num_threads(threads);
+            std::vector<double> all(3*n), some(3*n, sentinel);
+            ASSERT_TRUE(s.evaluateInto(a, beta, t, 3, all.data())) << what;
+            ASSERT_TRUE(s.evaluateInto(a, beta, t, 3, some.data(), &rows)) << what;
+            omp_set_num_threads(nThreads);
+            for (Eigen::Index i = 0; i < n; ++i)
+            {
+                const Eigen::Index p = n - 1 - i;
+                for (int q = 0; q < 3; ++q)
+                {
+                    if (i % 7)
+                    {
+                        ASSERT_EQ(some[3*p + q], all[3*p + q]) << what << ": row " << i;
+                    }
+                    else
+                    {
+                        ASSERT_TRUE(std::isnan(some[3*p + q])) << what << ": row " << i;
+                    }
+                }
+            }
+        }
+    };
+    check(alpha, "stored set");
+    Values alpha2 = alpha;
+    alpha2.col(2).setZero();
+    Eigen::MatrixX3d beta2 = beta;
+    beta2.col(2).setZero();
+    {
+        std::vector<double> all(3*n), some(3*n);
+        ASSERT_TRUE(s.evaluateInto(alpha2, beta2, t, 2, all.data()));
+        ASSERT_TRUE(s.evaluateInto(alpha2, beta2, t, 2, some.data(), &rows));
+        for (const int i : rows)
+        {
+            for (int q = 0; q < 3; ++q) ASSERT_EQ(some[3*(n - 1 - i) + q], all[3*(n - 1 - i) + q]);
+        }
+    }
+    Points moved = c;
+    moved.row(5) << 0.5, 0.5, 0.5;
+    moved.row(40) << 0.4, 0.6, 0.5;
+    ASSERT_TRUE(s.prepare(moved, std::size_t(1) << 30));
+    ASSERT_EQ(s.patchColumns(), 2);
+    check(alpha, "patched set");
+
+    std::vector<double> buffer(3*n);
+    const std::vector<int> outside{0, int(n)};
+    EXPECT_THROW(s.evaluateInto(alpha, beta, t, 3, buffer.data(), &outside), Error);
+    StoredEvaluation dense(RadialKernel::fromName("Gaussian", 0.5), frame, x.topRows(50));
+    ASSERT_TRUE(dense.prepare(c, std::size_t(1) << 30));
+    StoredEvaluation::Targets t50;
+    for (int i = 0; i <= 50; ++i) t50.start.push_back(std::size_t(i));
+    for (int i = 0; i < 50; ++i) t50.point.push_back(i);
+    const std::vector<int> few{1, 2};
+    EXPECT_FALSE(dense.evaluateInto(alpha, beta, t50, 3, buffer.data(), &few));
+}
+
 // A set that differs from the stored one by swaps, additions or removals is
 // served by a patch (no rebuild) and evaluates as the evaluator does; more
 // changes than maxPatchColumns build the matrix.
