@@ -177,26 +177,7 @@ std::size_t StoredEvaluation::Patch::bytes() const
 }
 
 
-void StoredEvaluation::Patch::columns
-(
-    std::vector<std::vector<int>>& rows,
-    std::vector<std::vector<double>>& values
-) const
-{
-    rows.assign(centre.size(), {});
-    values.assign(centre.size(), {});
-    for (std::size_t i = 0; i + 1 < start.size(); ++i)
-    {
-        for (std::uint32_t k = start[i]; k < start[i + 1]; ++k)
-        {
-            rows[entry[k]].push_back(int(i));
-            values[entry[k]].push_back(value[k]);
-        }
-    }
-}
-
-
-bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
+bool StoredEvaluation::planPatch(int k, const Points& c, Patch& p) const
 {
     static_assert(maxPatchColumns <= 256, "a patch entry's column in 8 bits");
     const Slot& s = slots_[k];
@@ -205,8 +186,10 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
     {
         columnOf[{s.centres(j, 0), s.centres(j, 1), s.centres(j, 2)}] = int(j);
     }
-    Patch p;
+    p.centres = c;
+    p.base = k;
     p.column.assign(c.rows(), -1);
+    p.centre.clear();
     Eigen::Index shared = 0;
     for (Eigen::Index j = 0; j < c.rows(); ++j)
     {
@@ -221,116 +204,91 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
             p.centre.push_back(int(j));
         }
     }
-    if
-    (
-        int(p.centre.size()) > maxPatchColumns
-     || s.centres.rows() - shared > maxPatchColumns
-    )
+    return
+        int(p.centre.size()) <= maxPatchColumns
+     && s.centres.rows() - shared <= maxPatchColumns;
+}
+
+
+bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
+{
+    Patch p;
+    if (!planPatch(k, c, p))
     {
         return false;
     }
-
-    // the new centres' columns, alone
-    const double R2 = kernel_.compact() ? kernel_.radius()*kernel_.radius() : -1;
-    const std::ptrdiff_t n = x_.rows();
     // (the rows' starts only for new columns: a patch that only removes
     // centres has none)
+    const std::ptrdiff_t n = x_.rows();
+    const std::size_t nNew = p.centre.size();
     std::size_t bytes =
-        s.bytes() + slots_[1 - k].bytes() + p.column.size()*sizeof(int)
-      + (p.centre.empty() ? 0 : (n + 1)*sizeof(std::uint32_t));
-    std::vector<std::vector<int>> rows(p.centre.size());
-    std::vector<std::vector<double>> values(p.centre.size());
-    // the current patch's columns (a trial swap after another: most are kept)
-    std::vector<std::vector<int>> oldRows;
-    std::vector<std::vector<double>> oldValues;
-    if (!patch_.centre.empty() && !p.centre.empty())
+        slots_[k].bytes() + slots_[1 - k].bytes() + p.column.size()*sizeof(int)
+      + (nNew ? (n + 1)*sizeof(std::uint32_t) : 0);
+    if (bytes > budget)
     {
-        patch_.columns(oldRows, oldValues);
+        return false;
     }
-    std::vector<char> taken(oldRows.size(), 0);
-    std::vector<double> column;
-    std::vector<char> within;
-    for (std::size_t e = 0; e < p.centre.size(); ++e)
+    if (nNew)
     {
-        const int j = p.centre[e];
-        std::size_t o = 0;
-        while
-        (
-            o < oldRows.size()
-         && (taken[o] || patch_.centres.row(patch_.centre[o]) != c.row(j))
-        )
+        // The new centres' columns by rows, each row's entries in the order
+        // of centre: a pass to count them, a pass to fill them (the kernel
+        // evaluated again: cheaper than columns gathered and merged). Into
+        // the current patch's storage (it is replaced, or prepare() drops
+        // it if this fails): no fresh pages for each trial swap's patch
+        p.start.swap(patch_.start);
+        p.entry.swap(patch_.entry);
+        p.value.swap(patch_.value);
+        p.start.resize(n + 1);
+        p.start[0] = 0;
+        Points cNew(nNew, 3);
+        for (std::size_t e = 0; e < nNew; ++e) cNew.row(e) = c.row(p.centre[e]);
+        const double R2 = kernel_.compact() ? kernel_.radius()*kernel_.radius() : -1;
+        std::size_t nnz = 0;
+        kernel_.visit([&](const auto& phi)
         {
-            ++o;
-        }
-        if (o < oldRows.size())
-        {
-            // (each old column moved once: a centre given twice is computed)
-            taken[o] = 1;
-            rows[e] = std::move(oldRows[o]);
-            values[e] = std::move(oldValues[o]);
-        }
-        else
-        {
-            // else the kernel at every point within R (threads), then
-            // those entries in ascending rows
-            column.resize(n);
-            within.resize(n);
-            kernel_.visit([&](const auto& phi)
-            {
-                #pragma omp parallel for schedule(static) if(n >= minParallelRows)
-                for (std::ptrdiff_t i = 0; i < n; ++i)
-                {
-                    const double d2 = (x_.row(i) - c.row(j)).squaredNorm();
-                    within[i] = R2 < 0 || d2 < R2;
-                    column[i] = within[i] ? phi.ofSquared(d2) : 0.0;
-                }
-            });
+            #pragma omp parallel for schedule(static) if(n >= minParallelRows)
             for (std::ptrdiff_t i = 0; i < n; ++i)
             {
-                if (within[i])
+                std::uint32_t m = 0;
+                double v;
+                for (std::size_t e = 0; e < nNew; ++e)
                 {
-                    rows[e].push_back(int(i));
-                    values[e].push_back(column[i]);
+                    m += entry(phi, R2, &x_(i, 0), &cNew(e, 0), v);
+                }
+                p.start[i + 1] = m;
+            }
+            for (std::ptrdiff_t i = 0; i < n; ++i)
+            {
+                nnz += p.start[i + 1];
+                p.start[i + 1] = std::uint32_t(nnz);
+            }
+            bytes += nnz*(1 + sizeof(double));
+            if (bytes > budget || nnz > std::numeric_limits<std::uint32_t>::max())
+            {
+                return;
+            }
+            p.entry.resize(nnz);
+            p.value.resize(nnz);
+            #pragma omp parallel for schedule(static) if(n >= minParallelRows)
+            for (std::ptrdiff_t i = 0; i < n; ++i)
+            {
+                std::uint32_t at = p.start[i];
+                double v;
+                for (std::size_t e = 0; e < nNew; ++e)
+                {
+                    if (entry(phi, R2, &x_(i, 0), &cNew(e, 0), v))
+                    {
+                        p.entry[at] = std::uint8_t(e);
+                        p.value[at++] = v;
+                    }
                 }
             }
-        }
-        bytes += rows[e].size()*(1 + sizeof(double));
-        if (bytes > budget)
+        });
+        if (bytes > budget || nnz > std::numeric_limits<std::uint32_t>::max())
         {
             return false;
         }
     }
-
-    // by rows: each row's entries in the order of the columns
-    std::size_t nnz = 0;
-    for (const std::vector<int>& r : rows) nnz += r.size();
-    if (nnz > std::numeric_limits<std::uint32_t>::max())
-    {
-        return false;
-    }
-    if (!p.centre.empty())
-    {
-        p.start.assign(n + 1, 0);
-        for (const std::vector<int>& r : rows)
-        {
-            for (const int i : r) ++p.start[i + 1];
-        }
-        std::partial_sum(p.start.begin(), p.start.end(), p.start.begin());
-        p.entry.resize(nnz);
-        p.value.resize(nnz);
-        std::vector<std::uint32_t> next(p.start.begin(), p.start.end() - 1);
-        for (std::size_t e = 0; e < rows.size(); ++e)
-        {
-            for (std::size_t m = 0; m < rows[e].size(); ++m)
-            {
-                const std::uint32_t at = next[rows[e][m]]++;
-                p.entry[at] = std::uint8_t(e);
-                p.value[at] = values[e][m];
-            }
-        }
-    }
-    p.centres = c;
-    p.base = k;
     patch_ = std::move(p);
     return true;
 }

@@ -76,6 +76,26 @@ public:
         const std::vector<int>* rows = nullptr
     ) const;
 
+    //- evaluateInto() at the listed rows for these centres, as if
+    //  prepare(centres, budgetBytes) had made them current (the same
+    //  values there, bit for bit), without changing what is stored: a set
+    //  that a patch of the current slot would serve has its new centres'
+    //  kernel values made at those rows alone (a trial swap's mesh at a
+    //  few cells: no column over every point). False, nothing written,
+    //  for a set prepare() would build, refuse or patch from the other
+    //  slot, whose patch might exceed the budget, or a dense matrix
+    bool evaluateRowsFor
+    (
+        const Points& centres,
+        std::size_t budgetBytes,
+        const Values& alpha,
+        const Eigen::MatrixX3d& beta,
+        const Targets& targets,
+        int components,
+        double* out,
+        const std::vector<int>& rows
+    ) const;
+
     //- Products of fewer kernel entries run on one thread, and a patch
     //  column's kernel values over fewer rows
     static constexpr std::size_t minParallelEntries = std::size_t(1) << 17;
@@ -125,12 +145,6 @@ private:
         std::vector<std::uint32_t> start;
         std::vector<std::uint8_t> entry;
         std::vector<double> value;
-        //- Each column's rows (ascending) and values
-        void columns
-        (
-            std::vector<std::vector<int>>& rows,
-            std::vector<std::vector<double>>& values
-        ) const;
         std::size_t bytes() const;
     };
 
@@ -142,9 +156,23 @@ private:
     //  it would take more than budget bytes
     bool patch(int k, const Points& centres, std::size_t budget);
 
-    //- The patched set's weights alpha in slot s's columns
-    Values slotWeights(const Slot& s, const Values& alpha) const;
+    //- The plan of a patch of slot k for centres c: p's centres, base,
+    //  column and centre (no entries); false if they differ in more than
+    //  maxPatchColumns centres either way
+    bool planPatch(int k, const Points& c, Patch& p) const;
 
+    //- A patch's entry for point i and centre c: within the support (or
+    //  a global kernel), and the kernel's value there (0 outside)
+    template<class Phi>
+    static bool entry(const Phi& phi, double R2, const double* x, const double* c, double& value);
+
+    //- The patched set's weights alpha in slot s's columns
+    Values slotWeights(const Slot& s, const Patch& patch, const Values& alpha) const;
+
+
+    //- Throw unless targets has a start per row (and one more) and the
+    //  rows (if any) are rows of the matrix
+    void checkTargets(const Targets& targets, const std::vector<int>* rows) const;
 
     //- Where a product's rows go instead of out (evaluateInto)
     struct Scatter
@@ -157,7 +185,8 @@ private:
     //- out = K alpha + Q beta for slot s, the first C columns (the others
     //  zero); out sized. With a scatter, the rows to its targets instead
     //  (a sparse slot). With the patch's weights (C per patch column),
-    //  each row's patch entries added after Q beta. With rows (and a
+    //  each row's entries of patch added after Q beta (byPosition: its
+    //  entries are by position in rows, not by row). With rows (and a
     //  scatter), only those rows
     template<int C>
     void product
@@ -168,7 +197,9 @@ private:
         Values& out,
         const Scatter* scatter,
         const double* patchWeights,
-        const std::vector<int>* rows
+        const std::vector<int>* rows,
+        const Patch& patch,
+        bool byPosition
     ) const;
 
     //- The product of slot s (patched: with the patch's columns, in the
@@ -181,6 +212,19 @@ private:
         Values& out,
         const Scatter* scatter = nullptr,
         const std::vector<int>* rows = nullptr
+    ) const;
+
+    //- The same with this patch (not the current one)
+    void productOf
+    (
+        const Slot& s,
+        const Patch& patch,
+        bool byPosition,
+        const Values& alpha,
+        const Eigen::MatrixX3d& beta,
+        Values& out,
+        const Scatter* scatter,
+        const std::vector<int>* rows
     ) const;
 
     RadialKernel kernel_;
@@ -197,5 +241,22 @@ private:
     Points refused_;                // the last set refused, and its budget
     std::size_t refusedBudget_ = 0;
 };
+
+template<class Phi>
+inline bool StoredEvaluation::entry
+(
+    const Phi& phi,
+    const double R2,
+    const double* x,
+    const double* c,
+    double& value
+)
+{
+    const double d0 = x[0] - c[0], d1 = x[1] - c[1], d2 = x[2] - c[2];
+    const double r2 = d0*d0 + d1*d1 + d2*d2;
+    const bool within = R2 < 0 || r2 < R2;
+    value = within ? phi.ofSquared(r2) : 0.0;
+    return within;
+}
 
 } // namespace dcprbf

@@ -63,15 +63,17 @@ void StoredEvaluation::product
     Values& out,
     const Scatter* scatter,
     const double* patchWeights,
-    const std::vector<int>* rows
+    const std::vector<int>* rows,
+    const Patch& patch,
+    const bool byPosition
 ) const
 {
     // every row, or the rows listed (the same operations on each row)
     const std::ptrdiff_t n = rows ? std::ptrdiff_t(rows->size()) : x_.rows();
     const int* row = rows ? rows->data() : nullptr;
-    const std::uint32_t* pStart = patchWeights ? patch_.start.data() : nullptr;
-    const std::uint8_t* pEntry = patch_.entry.data();
-    const double* pValue = patch_.value.data();
+    const std::uint32_t* pStart = patchWeights ? patch.start.data() : nullptr;
+    const std::uint8_t* pEntry = patch.entry.data();
+    const double* pValue = patch.value.data();
     const int P = polynomial_.size();
     const int L = int(basis_.cols());   // P - 1: Q's columns after the ones
     // alpha and beta with C columns, contiguous
@@ -126,7 +128,8 @@ void StoredEvaluation::product
             for (int q = 0; q < C; ++q) v[q] += qi[p]*b[C*(p + 1) + q];
         }
         // + the patch's columns (those of this row, in the patch's order)
-        for (std::uint32_t k = pStart ? pStart[i] : 0, end = pStart ? pStart[i + 1] : 0; k < end; ++k)
+        const std::ptrdiff_t pi = byPosition ? r : i;
+        for (std::uint32_t k = pStart ? pStart[pi] : 0, end = pStart ? pStart[pi + 1] : 0; k < end; ++k)
         {
             const double* w = patchWeights + C*pEntry[k];
             for (int q = 0; q < C; ++q) v[q] += pValue[k]*w[q];
@@ -150,13 +153,9 @@ void StoredEvaluation::product
 }
 
 
-bool StoredEvaluation::evaluateInto
+void StoredEvaluation::checkTargets
 (
-    const Values& alpha,
-    const Eigen::MatrixX3d& beta,
     const Targets& targets,
-    const int components,
-    double* out,
     const std::vector<int>* rows
 ) const
 {
@@ -180,6 +179,20 @@ bool StoredEvaluation::evaluateInto
             );
         }
     }
+}
+
+
+bool StoredEvaluation::evaluateInto
+(
+    const Values& alpha,
+    const Eigen::MatrixX3d& beta,
+    const Targets& targets,
+    const int components,
+    double* out,
+    const std::vector<int>* rows
+) const
+{
+    checkTargets(targets, rows);
     if (current_ < 0 && patch_.base < 0)
     {
         return false;
@@ -196,16 +209,21 @@ bool StoredEvaluation::evaluateInto
 }
 
 
-Values StoredEvaluation::slotWeights(const Slot& s, const Values& alpha) const
+Values StoredEvaluation::slotWeights
+(
+    const Slot& s,
+    const Patch& patch,
+    const Values& alpha
+) const
 {
     // the shared centres through the stored matrix (zero for the slot's
     // centres the set no longer has), the others alone
     Values a = Values::Zero(s.centres.rows(), 3);
-    for (std::size_t j = 0; j < patch_.column.size(); ++j)
+    for (std::size_t j = 0; j < patch.column.size(); ++j)
     {
-        if (patch_.column[j] >= 0)
+        if (patch.column[j] >= 0)
         {
-            a.row(patch_.column[j]) = alpha.row(j);
+            a.row(patch.column[j]) = alpha.row(j);
         }
     }
     return a;
@@ -222,25 +240,41 @@ void StoredEvaluation::productOf
     const std::vector<int>* rows
 ) const
 {
+    productOf(s, patch_, false, alpha, beta, out, scatter, rows);
+}
+
+
+void StoredEvaluation::productOf
+(
+    const Slot& s,
+    const Patch& patch,
+    const bool byPosition,
+    const Values& alpha,
+    const Eigen::MatrixX3d& beta,
+    Values& out,
+    const Scatter* scatter,
+    const std::vector<int>* rows
+) const
+{
     // a patched set's weights in the slot's columns, and its own columns'
     // weights (C contiguous per column)
-    const bool patched = patch_.base >= 0;
-    const Values a = patched ? slotWeights(s, alpha) : Values();
+    const bool patched = patch.base >= 0;
+    const Values a = patched ? slotWeights(s, patch, alpha) : Values();
     const Values& as = patched ? a : alpha;
     const int C = activeColumns(alpha, beta);
-    std::vector<double> w(C*patch_.centre.size());
-    for (std::size_t e = 0; e < patch_.centre.size(); ++e)
+    std::vector<double> w(C*patch.centre.size());
+    for (std::size_t e = 0; e < patch.centre.size(); ++e)
     {
-        for (int q = 0; q < C; ++q) w[C*e + q] = alpha(patch_.centre[e], q);
+        for (int q = 0; q < C; ++q) w[C*e + q] = alpha(patch.centre[e], q);
     }
     const double* pw = patched && !w.empty() ? w.data() : nullptr;
     if (C == 2)
     {
-        product<2>(s, as, beta, out, scatter, pw, rows);
+        product<2>(s, as, beta, out, scatter, pw, rows, patch, byPosition);
     }
     else
     {
-        product<3>(s, as, beta, out, scatter, pw, rows);
+        product<3>(s, as, beta, out, scatter, pw, rows, patch, byPosition);
     }
 }
 

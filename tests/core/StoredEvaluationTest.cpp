@@ -374,6 +374,107 @@ TEST(StoredEvaluation, EvaluateIntoRowsWritesThoseRowsAlone)
     EXPECT_FALSE(dense.evaluateInto(alpha, beta, t50, 3, buffer.data(), &few));
 }
 
+// evaluateRowsFor gives, bit for bit, what prepare() then evaluateInto() at
+// the rows would (its twin does that), without changing what is stored:
+// for the current patch's set, each slot's set, a set a patch of the
+// current slot serves (with and without a current patch, 2 and 3 columns);
+// false, nothing written, for a set to build, over the budget, or dense
+TEST(StoredEvaluation, EvaluateRowsForEqualsPrepareThenEvaluate)
+{
+    const LinearPolynomial frame(true, 3);
+    const Points x = randomPoints(3000, 3, 71);
+    const Points c = randomPoints(50, 3, 72);
+    const Points extra = randomPoints(40, 3, 73);
+    const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.35);
+    const std::size_t budget = std::size_t(1) << 30;
+    StoredEvaluation s(k, frame, x), twin(k, frame, x);
+    StoredEvaluation::Targets t;
+    t.start.push_back(0);
+    for (Eigen::Index i = 0; i < x.rows(); ++i)
+    {
+        if (i % 3) t.point.push_back(int(i));
+        t.start.push_back(t.point.size());
+    }
+    std::vector<int> rows;
+    for (int i = 0; i < x.rows(); i += 2) rows.push_back(i);
+    // centres at moved to new points (extra's, from its row e)
+    const auto swapped = [&](const Points& from, std::initializer_list<int> at, int e = 20)
+    {
+        Points to = from;
+        for (const int j : at) to.row(j) = extra.row(e++);
+        return to;
+    };
+    const Points cB = swapped(c, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9}, 0);   // a build
+    const auto check = [&](const Points& centres, const char* what, const bool served = true)
+    {
+        const Values alpha = test::smoothField(centres);
+        Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+        for (const int components : {3, 2})
+        {
+            Values a = alpha;
+            if (components == 2)
+            {
+                a.col(2).setZero();
+                beta.col(2).setZero();
+            }
+            const int columns = s.patchColumns(), builds = s.builds();
+            std::vector<double> mine(3*x.rows(), -1.0), theirs(3*x.rows(), -1.0);
+            const bool ok = s.evaluateRowsFor(centres, budget, a, beta, t, components, mine.data(), rows);
+            EXPECT_EQ(ok, served) << what;
+            EXPECT_EQ(s.patchColumns(), columns) << what;
+            EXPECT_EQ(s.builds(), builds) << what;
+            if (!ok)
+            {
+                EXPECT_TRUE(std::all_of(mine.begin(), mine.end(), [](double v) { return v == -1.0; })) << what;
+                continue;
+            }
+            StoredEvaluation copy(twin);
+            ASSERT_TRUE(copy.prepare(centres, budget)) << what;
+            ASSERT_TRUE(copy.evaluateInto(a, beta, t, components, theirs.data(), &rows)) << what;
+            for (std::size_t m = 0; m < mine.size(); ++m)
+            {
+                ASSERT_EQ(mine[m], theirs[m]) << what << ": value " << m << ", " << components << " columns";
+            }
+        }
+    };
+    const auto both = [&](const Points& centres)
+    {
+        ASSERT_TRUE(s.prepare(centres, budget));
+        ASSERT_TRUE(twin.prepare(centres, budget));
+    };
+    both(c);
+    check(c, "the current slot's set");
+    check(swapped(c, {3}), "one swap, no current patch");
+    check(swapped(c, {3, 10, 20, 30, 40, 41, 42, 43}), "eight swaps");
+    check(cB, "ten swaps: a build", false);
+    both(swapped(c, {3}));
+    check(swapped(c, {3}), "the current patch's set");
+    check(swapped(c, {3, 17}), "a patch beside the current one");
+    check(c, "the slot under the current patch");
+    both(cB);
+    both(swapped(cB, {5}, 30));
+    check(cB, "the current slot beside a patch");
+    check(c, "the other slot's set");
+    check(swapped(cB, {5}, 30), "the current patch's set again");
+    check(swapped(cB, {5, 6}, 30), "a patch of the current slot beside its patch");
+    check(swapped(c, {1}), "a patch of the other slot", false);
+
+    // over the budget: a patch that might not fit is prepare()'s to decide
+    std::vector<double> out(3*x.rows(), -1.0);
+    const Values alpha = test::smoothField(c);
+    const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+    EXPECT_FALSE(s.evaluateRowsFor(swapped(cB, {9}, 35), s.bytes(), alpha, beta, t, 3, out.data(), rows));
+    EXPECT_TRUE(std::all_of(out.begin(), out.end(), [](double v) { return v == -1.0; }));
+    const std::vector<int> outside{int(x.rows())};
+    EXPECT_THROW(s.evaluateRowsFor(cB, budget, alpha, beta, t, 3, out.data(), outside), Error);
+
+    // a dense matrix: refused
+    StoredEvaluation dense(RadialKernel::fromName("Gaussian", 0.5), frame, x);
+    ASSERT_TRUE(dense.prepare(c, budget));
+    EXPECT_FALSE(dense.evaluateRowsFor(c, budget, alpha, beta, t, 3, out.data(), rows));
+    EXPECT_FALSE(dense.evaluateRowsFor(swapped(c, {2}), budget, alpha, beta, t, 3, out.data(), rows));
+}
+
 // A set that differs from the stored one by swaps, additions or removals is
 // served by a patch (no rebuild) and evaluates as the evaluator does; more
 // changes than maxPatchColumns build the matrix.
