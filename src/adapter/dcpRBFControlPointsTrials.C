@@ -71,7 +71,6 @@ bool Foam::dcpRBFControlPoints::proposeSwap
                 nKept_ = 0;
             }
             trialFrom_.reset(new dcprbf::DynamicControlSet::State(before));
-            solve(d);
             return true;
         }
     }

@@ -203,8 +203,17 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
         }
         copyValues(v, disp);
     }
+    return correctInterpolated(d);
+}
 
+
+Foam::scalar Foam::dcpRBFMotionSolver::correctInterpolated
+(
+    const dcprbf::Values& d
+)
+{
     // Error at the boundary points, blended into the volume
+    vectorField& disp = pointDisplacement_.primitiveFieldRef();
     const dcprbf::Values error(d - controlPoints_.boundaryValues());
     if (settings_.boundaryCorrection())
     {

@@ -6,12 +6,11 @@ License
     GPL-3.0-or-later: see the LICENSE file at the top of the repository.
 -------------------------------------------------------------------------------
 Description
-    dcpRBFMotionSolver, continued: the mesh quality after a step, the
-    error-guided trial swaps judged by it, and the quality guard.
+    dcpRBFMotionSolver, continued: the mesh quality after a step and the
+    quality guard.
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFMotionSolver.H"
-#include "dcpRBFTrialWindow.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -35,143 +34,6 @@ void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
     r.nInverted = lastQuality_.nInverted;
     r.minQuality = lastQuality_.minQuality;
     r.meanQuality = lastQuality_.meanQuality;
-}
-
-
-void Foam::dcpRBFMotionSolver::trySwaps
-(
-    const dcprbf::Values& d,
-    dcpRBFStepLog::record& r
-)
-{
-    // Rescue: without swaps the mesh has inverted cells; the trials do not
-    // wait after fruitless ones, go on while they help (up to
-    // rescueSwapFactor nSwap) and the swaps apply at once (no blend: an
-    // inverted mesh has no smooth motion to keep)
-    const bool rescue = lastQuality_.nInverted > 0;
-    if
-    (
-        !controlPoints_.canTrial(rescue)
-     || lastQuality_.worst.empty()
-     || lastQuality_.minQuality >= 1 - 1e-12
-    )
-    {
-        return;
-    }
-    const label nTrials =
-        (rescue ? rescueSwapFactor : 1)*settings_.selection().nSwap;
-    r.rescue = rescue;
-
-    // Trials judged on the worst cells and those around the leaving points
-    const label nWindow =
-        max(minTrialWindow, label(trialWindowFraction*lastQuality_.nCells));
-    dcpRBFTrialWindow window
-    (
-        mesh(), region_, lastQuality_.quality, nWindow, points0(),
-        settings_.metric()
-    );
-    dcpRBFQualityRegion::rankedCell worst(lastQuality_.worst[0]);
-    pointField current(lastPoints_);
-    const vectorField noSwapField(pointDisplacement_.primitiveField());
-    const bool noSwapMeasured = pointsMeasured_;
-    const dcpRBFStepLog::record noSwapRecord(r);
-
-    // Rescue during a blend: the blend ends at once, the trials start from
-    // the new set's mesh (the blend is put back if nothing beats the mesh
-    // without swaps)
-    dcpRBFControlPoints::blendState blend;
-    if (rescue && controlPoints_.blending())
-    {
-        blend = controlPoints_.finishBlend(d);
-        r.boundaryError = interpolateDisplacement(d);
-        current = curPoints();
-        worst = window.worst(current);
-    }
-
-    // up to nSwap trials, each kept only if the window's minimum improves
-    label skip = 0;
-    for (label trial = 0; trial < nTrials; ++trial)
-    {
-        if
-        (
-            worst[0] >= 1 - 1e-12
-         || !controlPoints_.proposeSwap(worst, d, skip)
-        )
-        {
-            break;
-        }
-        // the cells around the leaving point join the window, as they are
-        worst = std::min
-        (
-            worst,
-            window.add
-            (
-                controlPoints_.leaving(),
-                leavingReachFraction*controlPoints_.leavingReach(),
-                current
-            )
-        );
-        const vectorField field0(pointDisplacement_.primitiveField());
-        const scalar error0 = r.boundaryError;
-        r.boundaryError = interpolateDisplacement(d);
-        pointField p(curPoints());
-        const dcpRBFQualityRegion::rankedCell w(window.worst(p));
-        if (w[0] > worst[0])
-        {
-            controlPoints_.keepSwap();
-            worst = w;
-            current.transfer(p);
-            skip = 0;
-            continue;
-        }
-        controlPoints_.undoSwap(d);
-        pointDisplacement_.primitiveFieldRef() = field0;
-        r.boundaryError = error0;
-        ++r.nUndone;
-        // rescue: the next leaving point instead, a few times
-        if (!rescue || ++skip >= rescueSkips)
-        {
-            break;
-        }
-    }
-    const label kept = controlPoints_.endTrials(d, !rescue);
-    if (!kept && !blend.from)
-    {
-        // the mesh without swaps (every trial undone: the displacement
-        // as before them), measured in lastQuality_ and lastPoints_
-        pointsMeasured_ = noSwapMeasured;
-        return;
-    }
-
-    // The mesh this step writes (with swapBlendSteps > 1 the blend's first
-    // step, not the whole swap), measured in full: better than without the
-    // swaps, or they are abandoned
-    dcpRBFQualityRegion::summary noSwap(std::move(lastQuality_));
-    pointField noSwapPoints(std::move(lastPoints_));
-    if (!rescue && settings_.selection().swapBlendSteps > 1)
-    {
-        r.boundaryError = interpolateDisplacement(d);
-    }
-    measureQuality(r);
-    if (lastQuality_.minQuality > noSwap.minQuality)
-    {
-        r.nAdded += kept;
-        r.nRemoved += kept;
-        return;
-    }
-    controlPoints_.abandonSwaps(d);
-    if (blend.from)
-    {
-        controlPoints_.resumeBlend(std::move(blend), d);
-    }
-    pointDisplacement_.primitiveFieldRef() = noSwapField;
-    lastQuality_ = std::move(noSwap);
-    lastPoints_.transfer(noSwapPoints);
-    pointsMeasured_ = noSwapMeasured;
-    const label nUndone = r.nUndone;
-    r = noSwapRecord;
-    r.nUndone = nUndone + kept;
-    r.rescue = rescue;
 }
 
 

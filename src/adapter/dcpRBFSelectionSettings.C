@@ -33,11 +33,18 @@ Foam::dcpRBFSelectionSettings::ruleNames
     {rule::nearest, "nearest"}
 });
 
+const Foam::Enum<Foam::dcpRBFSelectionSettings::trialPoints>
+Foam::dcpRBFSelectionSettings::trialPointsNames
+({
+    {trialPoints::window, "window"},
+    {trialPoints::all, "all"}
+});
+
 const Foam::wordList Foam::dcpRBFSelectionSettings::keywords
 ({
     "selection", "tolerance", "minPoints", "maxPoints", "doubleEdged",
     "selectOn", "reselectTolerance", "nSwap", "protectSteps", "swapRule",
-    "swapBlendSteps"
+    "swapBlendSteps", "trialPoints"
 });
 
 
@@ -66,11 +73,15 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     nSwap = r.getLabel("nSwap", swapRule == rule::errorGuided ? 4 : 1, 0, 1000);
     protectSteps = r.getLabel("protectSteps", 3, 0, 1000000);
     swapBlendSteps = r.getLabel("swapBlendSteps", 4, 1, 1000);
-    if (swapRule == rule::nearest && dict.found("swapBlendSteps"))
+    trialAt = r.getEnum("trialPoints", trialPointsNames, trialPoints::window);
+    for (const word k : {"swapBlendSteps", "trialPoints"})
     {
-        FatalIOErrorInFunction(dict)
-            << "Keyword swapBlendSteps has no effect with swapRule nearest."
-            << " It belongs to swapRule errorGuided" << exit(FatalIOError);
+        if (swapRule == rule::nearest && dict.found(k))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword " << k << " has no effect with swapRule nearest."
+                << " It belongs to swapRule errorGuided" << exit(FatalIOError);
+        }
     }
 
     if (selection == mode::all)
@@ -81,7 +92,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
             {
                 const bool dynamicOnly =
                     k == "nSwap" || k == "protectSteps" || k == "swapRule"
-                 || k == "swapBlendSteps";
+                 || k == "swapBlendSteps" || k == "trialPoints";
                 FatalIOErrorInFunction(dict)
                     << "Keyword " << k << " has no effect with selection all."
                     << " Allowed selections using it: "
@@ -92,7 +103,11 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     }
     if (selection != mode::dynamic)
     {
-        for (const word k : {"nSwap", "protectSteps", "swapRule", "swapBlendSteps"})
+        for
+        (
+            const word k
+          : {"nSwap", "protectSteps", "swapRule", "swapBlendSteps", "trialPoints"}
+        )
         {
             if (dict.found(k))
             {

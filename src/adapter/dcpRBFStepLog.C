@@ -66,6 +66,10 @@ void Foam::dcpRBFStepLog::write(const record& r)
     {
         line<< ", " << r.nUndone << " trial swap(s) undone";
     }
+    if (r.trialPoints)
+    {
+        line<< ", trials at " << r.trialPoints << " points";
+    }
     line<< (r.rescue ? ", rescue" : "") << "), quality min "
         << r.minQuality << " mean " << r.meanQuality << " (" << r.nCells
         << " cells in reach";

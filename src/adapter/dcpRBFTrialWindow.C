@@ -65,6 +65,26 @@ void Foam::dcpRBFTrialWindow::append(labelList&& positions)
         merged.begin()
     );
     positions_.transfer(merged);
+    // the new cells' points not yet in the window
+    const label nBefore = points_.size();
+    const cellList& cells = mesh_.cells();
+    const faceList& faces = mesh_.faces();
+    for (const label i : positions)
+    {
+        for (const label facei : cells[region_.cells()[i]])
+        {
+            for (const label pointi : faces[facei])
+            {
+                if (marked_.set(pointi))
+                {
+                    points_.append(pointi);
+                }
+            }
+        }
+    }
+    nAdded_ = points_.size() - nBefore;
+    // (ascending: the points' values read in order)
+    std::sort(points_.begin() + nBefore, points_.end());
     // the region's classified cells copied (3D), or the cells from the mesh
     // (2D polygons)
     const dcpRBFCellQuality& all = region_.cellQuality();
@@ -86,11 +106,16 @@ Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::localWorst
 (
     const dcpRBFCellQuality& quality,
     const labelUList& positions,
-    const pointField& p
+    const pointField& p,
+    scalar* sum
 ) const
 {
     // none here: above every quality
     const scalarField q(quality.compute(p));
+    if (sum)
+    {
+        *sum += Foam::sum(q);
+    }
     const List<FixedList<scalar, 3>>& centres = region_.centres();
     dcpRBFQualityRegion::rankedCell w({VGREAT, 0, 0, 0});
     forAll(q, i)
@@ -139,7 +164,8 @@ Foam::dcpRBFTrialWindow::dcpRBFTrialWindow
     mesh_(mesh),
     region_(region),
     points0_(points0),
-    metric_(metric)
+    metric_(metric),
+    marked_(mesh.nPoints())
 {
     append(lowest(q, n));
 }
@@ -153,11 +179,10 @@ Foam::label Foam::dcpRBFTrialWindow::size() const
 }
 
 
-Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::add
+void Foam::dcpRBFTrialWindow::add
 (
     const Eigen::RowVector3d& x,
-    const scalar radius,
-    const pointField& p
+    const scalar radius
 )
 {
     const labelList near(region_.within(x, radius));
@@ -168,6 +193,12 @@ Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::add
         std::back_inserter(added)
     );
     append(labelList(added.begin(), added.end()));
+}
+
+
+Foam::dcpRBFQualityRegion::rankedCell
+Foam::dcpRBFTrialWindow::worstAdded(const pointField& p) const
+{
     return globalWorst(localWorst(scans_.last(), chunks_.last(), p));
 }
 
@@ -182,6 +213,16 @@ Foam::dcpRBFTrialWindow::worst(const pointField& p) const
         w = std::min(w, localWorst(scans_[i], chunks_[i], p));
     }
     return globalWorst(w);
+}
+
+Foam::scalar Foam::dcpRBFTrialWindow::sum(const pointField& p) const
+{
+    scalar s = 0;
+    forAll(scans_, i)
+    {
+        localWorst(scans_[i], chunks_[i], p, &s);
+    }
+    return returnReduce(s, sumOp<scalar>());
 }
 
 // ************************************************************************* //

@@ -1,0 +1,350 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF: radial-basis-function mesh motion with dynamic control points
+-------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
+-------------------------------------------------------------------------------
+Description
+    dcpRBFMotionSolver, continued: the error-guided trial swaps, judged on
+    the mesh of a window of cells (dcpRBFTrialWindow), and that mesh made
+    at the window's points alone.
+\*---------------------------------------------------------------------------*/
+
+#include "dcpRBFMotionSolver.H"
+#include "dcpRBFTrialWindow.H"
+#include "OStringStream.H"
+
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::dcpRBFMotionSolver::interpolateAt
+(
+    const dcprbf::Values& d,
+    const labelUList& points,
+    scalar& error
+)
+{
+    // Restricted where every step of interpolateDisplacement() is either
+    // the point's own (the product's row, the prescribed value, the
+    // boundary correction, the 2D pair) or reads finishedPoints_ alone (the
+    // patches' conditions and constraints, the sliding walls' change and
+    // its blend, the processors' synchronisation): those are made too.
+    // Restricted on every processor or on none (the constraints exchange
+    // values)
+    const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
+    if
+    (
+        rotation_.active()
+     || projection_.axis(0) != 0 || projection_.axis(1) != 1 || projection_.axis(2) != 2
+     || !returnReduce(pointDisplacement_.size() > 0, andOp<bool>())
+    )
+    {
+        return false;
+    }
+    // the distinct rows of the interior points among them, ascending
+    const dcpRBFBoundaryPoints::pointKind* kind = boundaryPoints_.kinds().cdata();
+    rowMarks_.resize(distinct_.points().rows(), 0);
+    trialRows_.clear();
+    const auto addRows = [&](const labelUList& pts)
+    {
+        for (const label pointi : pts)
+        {
+            if (kind[pointi] == dcpRBFBoundaryPoints::interiorPoint)
+            {
+                const label row = distinct_.of(pointi);
+                if (!rowMarks_[row])
+                {
+                    rowMarks_[row] = 1;
+                    trialRows_.push_back(int(row));
+                }
+            }
+        }
+    };
+    addRows(points);
+    addRows(finishedPoints_);
+    for (const int row : trialRows_)
+    {
+        rowMarks_[row] = 0;
+    }
+    std::sort(trialRows_.begin(), trialRows_.end());
+
+    // (the trial's field starts as the current displacement: every value
+    // finite where it is not made)
+    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    if (trialDisplacement_.size() != disp.size())
+    {
+        trialDisplacement_ = disp;
+    }
+    // the set's values at those rows as the stored matrix would give them
+    // (without a patch over every point if the current matrix serves the
+    // set with a few columns more), else the set's matrix prepared
+    const std::size_t budget = std::size_t(settings_.evaluationMemoryMB()) << 20;
+    const label dim = projection_.dim();
+    double* out = &trialDisplacement_[0][0];
+    const bool made =
+        stored_.evaluateRowsFor
+        (
+            s.centres(), budget, s.weights(), s.polynomialCoeffs(),
+            interiorTargets_, dim, out, trialRows_
+        )
+     || (
+            stored_.prepare(s.centres(), budget)
+         && stored_.evaluateInto
+            (
+                s.weights(), s.polynomialCoeffs(), interiorTargets_, dim, out,
+                &trialRows_
+            )
+        );
+    if (!returnReduce(made, andOp<bool>()))
+    {
+        return false;
+    }
+    for (const label pointi : boundaryMeshPoints_)
+    {
+        trialDisplacement_[pointi] = prescribed_[pointi];
+    }
+
+    // the correction and the constraints on the trial's field, in place of
+    // the displacement's (exchanged, not copied)
+    disp.swap(trialDisplacement_);
+    error = correctInterpolated(d);
+    disp.swap(trialDisplacement_);
+
+    // the points: 2D pairs over the whole field, else each point alone
+    if (twoDPoints_.required())
+    {
+        twoDPoints_.move(points0(), trialDisplacement_, trialPoints_);
+    }
+    else
+    {
+        trialPoints_.setSize(disp.size());
+        const pointField& p0 = points0();
+        for (const label pointi : points)
+        {
+            trialPoints_[pointi] = p0[pointi] + trialDisplacement_[pointi];
+        }
+    }
+    return true;
+}
+
+
+void Foam::dcpRBFMotionSolver::trySwaps
+(
+    const dcprbf::Values& d,
+    dcpRBFStepLog::record& r
+)
+{
+    // Rescue: without swaps the mesh has inverted cells; the trials do not
+    // wait after fruitless ones, go on while they help (up to
+    // rescueSwapFactor nSwap) and the swaps apply at once (no blend: an
+    // inverted mesh has no smooth motion to keep)
+    const bool rescue = lastQuality_.nInverted > 0;
+    if
+    (
+        !controlPoints_.canTrial(rescue)
+     || lastQuality_.worst.empty()
+     || lastQuality_.minQuality >= 1 - 1e-12
+    )
+    {
+        return;
+    }
+    const label nTrials =
+        (rescue ? rescueSwapFactor : 1)*settings_.selection().nSwap;
+    const bool atWindow =
+        settings_.selection().trialAt == dcpRBFSelectionSettings::trialPoints::window;
+    r.rescue = rescue;
+
+    // Trials judged on the worst cells and those around the leaving points
+    const label nWindow =
+        max(minTrialWindow, label(trialWindowFraction*lastQuality_.nCells));
+    dcpRBFTrialWindow window
+    (
+        mesh(), region_, lastQuality_.quality, nWindow, points0(),
+        settings_.metric()
+    );
+    dcpRBFQualityRegion::rankedCell worst(lastQuality_.worst[0]);
+    // the mesh of the set kept so far: at every point (complete), or, once
+    // a trial made at the window's points alone is kept, at those
+    pointField current(lastPoints_);
+    bool complete = true;
+    // the displacement is the current evaluator's (made at the window's
+    // points, a trial leaves it as it was), or was changed at all
+    bool fieldIsSet = true;
+    bool fieldChanged = false;
+    // some mesh was made at the window's points alone
+    bool windowed = false;
+    const vectorField noSwapField(pointDisplacement_.primitiveField());
+    const bool noSwapMeasured = pointsMeasured_;
+    const dcpRBFStepLog::record noSwapRecord(r);
+
+    // The mesh of the current evaluator at the window's points (at every
+    // point if it cannot be restricted: in the displacement)
+    scalar error = 0;
+    pointField full;
+    const auto meshOfSet = [&]() -> const pointField&
+    {
+        if (atWindow && interpolateAt(d, window.points(), error))
+        {
+            windowed = true;
+            return trialPoints_;
+        }
+        error = interpolateDisplacement(d);
+        fieldIsSet = fieldChanged = true;
+        currentPoints(full);
+        return full;
+    };
+
+    // Rescue during a blend: the blend ends at once, the trials start from
+    // the new set's mesh (the blend is put back if nothing beats the mesh
+    // without swaps)
+    dcpRBFControlPoints::blendState blend;
+    if (rescue && controlPoints_.blending())
+    {
+        blend = controlPoints_.finishBlend(d);
+        r.boundaryError = interpolateDisplacement(d);
+        fieldChanged = true;
+        current = curPoints();
+        worst = window.worst(current);
+    }
+
+    // up to nSwap trials, each kept only if the window's minimum improves
+    label skip = 0;
+    for (label trial = 0; trial < nTrials; ++trial)
+    {
+        if
+        (
+            worst[0] >= 1 - 1e-12
+         || !controlPoints_.proposeSwap(worst, d, skip)
+        )
+        {
+            break;
+        }
+        // the cells around the leaving point join the window, on the kept
+        // set's mesh (not solved yet for the proposal): made at their
+        // points first if that mesh is the window's alone
+        window.add
+        (
+            controlPoints_.leaving(),
+            leavingReachFraction*controlPoints_.leavingReach()
+        );
+        if (!complete && returnReduce(window.nAdded() > 0, orOp<bool>()))
+        {
+            const pointField& kept = meshOfSet();
+            const labelUList& pts = window.points();
+            if (&kept == &full)
+            {
+                current.transfer(full);
+                complete = true;
+            }
+            for (label i = pts.size() - window.nAdded(); !complete && i < pts.size(); ++i)
+            {
+                current[pts[i]] = kept[pts[i]];
+            }
+        }
+        worst = std::min(worst, window.worstAdded(current));
+
+        // the trial's mesh
+        const bool setBefore = fieldIsSet;
+        controlPoints_.solve(d);
+        fieldIsSet = false;
+        const scalar error0 = r.boundaryError;
+        const pointField& p = meshOfSet();
+        r.boundaryError = error;
+        const dcpRBFQualityRegion::rankedCell w(window.worst(p));
+        if (debug)
+        {
+            // every digit: the trials of trialPoints window and all compare
+            OStringStream msg;
+            msg.precision(17);
+            msg << typeName << ": trial swap on " << window.size()
+                << " cells: minimum " << w[0] << " against " << worst[0]
+                << ", sum " << window.sum(p)
+                << (w[0] > worst[0] ? ", kept" : ", undone");
+            Info<< msg.str().c_str() << endl;
+        }
+        if (w[0] > worst[0])
+        {
+            controlPoints_.keepSwap();
+            worst = w;
+            if (&p == &full)
+            {
+                current.transfer(full);
+                complete = true;
+            }
+            else
+            {
+                for (const label pointi : window.points())
+                {
+                    current[pointi] = p[pointi];
+                }
+                complete = false;
+            }
+            skip = 0;
+            continue;
+        }
+        // the set as before the trial: so is the displacement if the trial
+        // did not change it
+        controlPoints_.undoSwap(d);
+        fieldIsSet = fieldIsSet ? false : setBefore;
+        r.boundaryError = error0;
+        ++r.nUndone;
+        // rescue: the next leaving point instead, a few times
+        if (!rescue || ++skip >= rescueSkips)
+        {
+            break;
+        }
+    }
+    const label kept = controlPoints_.endTrials(d, !rescue);
+    if (windowed)
+    {
+        r.trialPoints = returnReduce(window.points().size(), sumOp<label>());
+    }
+    if (!kept && !blend.from)
+    {
+        // the mesh without swaps (every trial undone), measured in
+        // lastQuality_ and lastPoints_
+        if (fieldChanged)
+        {
+            pointDisplacement_.primitiveFieldRef() = noSwapField;
+        }
+        pointsMeasured_ = noSwapMeasured;
+        return;
+    }
+
+    // The mesh this step writes (with swapBlendSteps > 1 the blend's first
+    // step, not the whole swap; made anew unless the displacement is the
+    // set's), measured in full: better than without the swaps, or they
+    // are abandoned
+    dcpRBFQualityRegion::summary noSwap(std::move(lastQuality_));
+    pointField noSwapPoints(std::move(lastPoints_));
+    if ((kept && !rescue && settings_.selection().swapBlendSteps > 1) || !fieldIsSet)
+    {
+        r.boundaryError = interpolateDisplacement(d);
+    }
+    measureQuality(r);
+    if (lastQuality_.minQuality > noSwap.minQuality)
+    {
+        r.nAdded += kept;
+        r.nRemoved += kept;
+        return;
+    }
+    controlPoints_.abandonSwaps(d);
+    if (blend.from)
+    {
+        controlPoints_.resumeBlend(std::move(blend), d);
+    }
+    pointDisplacement_.primitiveFieldRef() = noSwapField;
+    lastQuality_ = std::move(noSwap);
+    lastPoints_.transfer(noSwapPoints);
+    pointsMeasured_ = noSwapMeasured;
+    const label nUndone = r.nUndone, trialPoints = r.trialPoints;
+    r = noSwapRecord;
+    r.nUndone = nUndone + kept;
+    r.trialPoints = trialPoints;
+    r.rescue = rescue;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,96 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# Integration tests: error-guided trial swaps whose meshes are made at the
+# window's points alone (trialPoints window, the default) decide as those
+# made at every point (trialPoints all): the same swaps, the same time
+# series but for the times, the same points bit for bit at every written
+# time. In 2D (the front and back points of a pair), in 3D next to sliding
+# walls (a symmetryPlane meeting slip walls: their change blended into the
+# volume), and on 2 processors (the processor points synchronised).
+
+# windowEqualsAll NP: this case (selection dynamic) run as it is and, in
+# all/, with trialPoints all, on NP processors (simple decomposition, 2 1 1)
+windowEqualsAll() {
+    local np="$1"
+    foamDictionary system/controlDict -entry writePrecision -set 17 > /dev/null
+    # each trial's window minimum and the one it must beat, every digit (the
+    # library loaded with the controlDict: its debug switch is set then)
+    foamDictionary system/controlDict -entry libs -set '("libdcpRBF.so")' > /dev/null
+    foamDictionary system/controlDict -entry DebugSwitches -set "{ dcpRBF 1; }" > /dev/null
+    writeFile system/decomposeParDict dictionary <<'EOT'
+numberOfSubdomains 2;
+method simple;
+coeffs { n (2 1 1); }
+EOT
+    mkdir -p all
+    cp -r constant system 0 all/
+    sed -i 's/selection dynamic;/selection dynamic; trialPoints all;/' all/constant/dynamicMeshDict
+    grep -q "trialPoints all;" all/constant/dynamicMeshDict || fail "trialPoints all not set" || return 1
+    motionRun "$np" || return 1
+    (cd all && motionRun "$np") || fail "the run with trialPoints all failed (see all/log.*)" || return 1
+
+    # trials were made, at the window's points in the first run only; some
+    # kept, in a step two or more (the next trial's cells measured on the
+    # kept trial's mesh), some undone
+    local log=log.moveDynamicMesh
+    [ "$np" -eq 1 ] || log=log.mpirun
+    grep -q "trials at [0-9]* points" "$log" \
+        || fail "no trial made at the window's points" || return 1
+    ! grep -q "trials at" "all/$log" \
+        || fail "trialPoints all: trials made at the window's points" || return 1
+    awk '!/^#/ { kept += $3; undone += $15; if ($3 > most) most = $3 }
+         END { print kept " trials kept (at most " most " in a step), " undone " undone";
+               exit !(most >= 2 && undone >= 1) }' \
+        postProcessing/dcpRBF/0/dcpRBF.dat \
+        || fail "no step with two kept trials, or none undone" || return 1
+
+    # every trial's window minimum and the minimum it had to beat
+    [ "$(grep -c "dcpRBF: trial swap on" "$log")" -ge 4 ] \
+        || fail "fewer than 4 trials in the debug output" || return 1
+    cmp -s <(grep "dcpRBF: trial swap on" "$log") <(grep "dcpRBF: trial swap on" "all/$log") \
+        || fail "the trials differ: $(diff <(grep "dcpRBF: trial swap on" "$log") \
+                 <(grep "dcpRBF: trial swap on" "all/$log") | head -n 4)" || return 1
+
+    # the time series without the times (swap, select, interpolate, guard,
+    # points: columns 11-14 and 16)
+    local series='!/^#/ { $11 = $12 = $13 = $14 = $16 = ""; print }'
+    cmp -s <(awk "$series" postProcessing/dcpRBF/0/dcpRBF.dat) \
+           <(awk "$series" all/postProcessing/dcpRBF/0/dcpRBF.dat) \
+        || fail "the time series differ: $(diff <(awk "$series" postProcessing/dcpRBF/0/dcpRBF.dat) \
+                 <(awk "$series" all/postProcessing/dcpRBF/0/dcpRBF.dat) | head -n 4)" || return 1
+
+    # the points at every written time
+    local files n=0
+    if [ "$np" -eq 1 ]
+    then
+        files=$(ls -d [0-9]*/polyMesh/points | grep -v '^0/')
+    else
+        files=$(ls -d processor*/[0-9]*/polyMesh/points | grep -v '/0/')
+    fi
+    for f in $files
+    do
+        cmp -s "$f" "all/$f" || fail "$f differs" || return 1
+        n=$((n + 1))
+    done
+    echo "$n points files the same"
+    [ "$n" -ge 2 ] || fail "fewer than 2 written times"
+}
+
+test_trialPoints_windowEqualsAll_airfoil2D() {
+    modeRun2D "selection dynamic; tolerance 5e-2; nSwap 2; swapBlendSteps 1;" || return 1
+    foamDictionary system/controlDict -entry writeInterval -set 2 > /dev/null
+    windowEqualsAll 1
+}
+
+test_trialPoints_windowEqualsAll_slipDuct3D() {
+    slipDuctCase || return 1
+    sed -i 's/selection dynamic;/selection dynamic; tolerance 3e-2;/' constant/dynamicMeshDict
+    foamDictionary system/controlDict -entry writeInterval -set 5 > /dev/null
+    windowEqualsAll 1
+}
+
+test_trialPoints_windowEqualsAll_slipDuct3D_parallel() {
+    slipDuctCase || return 1
+    sed -i 's/selection dynamic;/selection dynamic; tolerance 3e-2;/' constant/dynamicMeshDict
+    foamDictionary system/controlDict -entry writeInterval -set 5 > /dev/null
+    windowEqualsAll 2
+}
