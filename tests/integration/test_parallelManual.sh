@@ -210,7 +210,7 @@ test_parallelManual_airfoil2D_bendingWing_dcpTrials_equalsSerial() {
     grep -q ', rescue), quality min' log.moveDynamicMesh || fail "no ', rescue' in the log" || return 1
     local bad
     bad=$(grep '^dcpRBF: control points' log.moveDynamicMesh \
-        | grep -v -E '^dcpRBF: control points [0-9]+ \(\+[0-9]+ -[0-9]+, guard \+[0-9]+(, [0-9]+ trial swap\(s\) undone)?(, rescue)?\), quality min ' \
+        | grep -v -E '^dcpRBF: control points [0-9]+ \(\+[0-9]+ -[0-9]+, guard \+[0-9]+(, [0-9]+ trial swap\(s\) undone)?(, trials at [0-9]+ points)?(, rescue)?\), quality min ' \
         | head -n 1)
     [ -z "$bad" ] || fail "a log line not as documented: ${bad:0:120}"
 }
