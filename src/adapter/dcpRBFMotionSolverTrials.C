@@ -179,13 +179,13 @@ void Foam::dcpRBFMotionSolver::trySwaps
     const bool noSwapMeasured = pointsMeasured_;
     const dcpRBFStepLog::record noSwapRecord(r);
 
-    // The mesh of the current evaluator at the window's points (at every
-    // point if it cannot be restricted: in the displacement)
+    // The mesh of the current evaluator at these of the window's points
+    // (at every point if it cannot be restricted: in the displacement)
     scalar error = 0;
     pointField full;
-    const auto meshOfSet = [&]() -> const pointField&
+    const auto meshOfSet = [&](const labelUList& pts) -> const pointField&
     {
-        if (atWindow && interpolateAt(d, window.points(), error))
+        if (atWindow && interpolateAt(d, pts, error))
         {
             windowed = true;
             return trialPoints_;
@@ -231,16 +231,20 @@ void Foam::dcpRBFMotionSolver::trySwaps
         );
         if (!complete && returnReduce(window.nAdded() > 0, orOp<bool>()))
         {
-            const pointField& kept = meshOfSet();
-            const labelUList& pts = window.points();
+            const labelUList& all = window.points();
+            const SubList<label> added
+            (
+                all, window.nAdded(), all.size() - window.nAdded()
+            );
+            const pointField& kept = meshOfSet(added);
             if (&kept == &full)
             {
                 current.transfer(full);
                 complete = true;
             }
-            for (label i = pts.size() - window.nAdded(); !complete && i < pts.size(); ++i)
+            for (label i = 0; !complete && i < added.size(); ++i)
             {
-                current[pts[i]] = kept[pts[i]];
+                current[added[i]] = kept[added[i]];
             }
         }
         worst = std::min(worst, window.worstAdded(current));
@@ -250,7 +254,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
         controlPoints_.solve(d);
         fieldIsSet = false;
         const scalar error0 = r.boundaryError;
-        const pointField& p = meshOfSet();
+        const pointField& p = meshOfSet(window.points());
         r.boundaryError = error;
         const dcpRBFQualityRegion::rankedCell w(window.worst(p));
         if (debug)

@@ -65,26 +65,6 @@ void Foam::dcpRBFTrialWindow::append(labelList&& positions)
         merged.begin()
     );
     positions_.transfer(merged);
-    // the new cells' points not yet in the window
-    const label nBefore = points_.size();
-    const cellList& cells = mesh_.cells();
-    const faceList& faces = mesh_.faces();
-    for (const label i : positions)
-    {
-        for (const label facei : cells[region_.cells()[i]])
-        {
-            for (const label pointi : faces[facei])
-            {
-                if (marked_.set(pointi))
-                {
-                    points_.append(pointi);
-                }
-            }
-        }
-    }
-    nAdded_ = points_.size() - nBefore;
-    // (ascending: the points' values read in order)
-    std::sort(points_.begin() + nBefore, points_.end());
     // the region's classified cells copied (3D), or the cells from the mesh
     // (2D polygons)
     const dcpRBFCellQuality& all = region_.cellQuality();
@@ -98,6 +78,41 @@ void Foam::dcpRBFTrialWindow::append(labelList&& positions)
             points0_, metric_
         )
     );
+    // the new cells' points not yet in the window (from the scan's list of
+    // the points it reads, else from the mesh's faces)
+    const label nBefore = points_.size();
+    const auto mark = [&](const label pointi)
+    {
+        if (marked_.set(pointi))
+        {
+            points_.append(pointi);
+        }
+    };
+    if (const std::vector<int>* ids = scans_.last().pointIds())
+    {
+        for (const int pointi : *ids)
+        {
+            mark(pointi);
+        }
+    }
+    else
+    {
+        const cellList& cells = mesh_.cells();
+        const faceList& faces = mesh_.faces();
+        for (const label i : positions)
+        {
+            for (const label facei : cells[region_.cells()[i]])
+            {
+                for (const label pointi : faces[facei])
+                {
+                    mark(pointi);
+                }
+            }
+        }
+    }
+    nAdded_ = points_.size() - nBefore;
+    // (ascending: the points' values read in order)
+    std::sort(points_.begin() + nBefore, points_.end());
     chunks_.append(std::move(positions));
 }
 

@@ -69,6 +69,10 @@ public:
     //- Number of cells
     std::size_t size() const { return order_.size(); }
 
+    //- The points the cells use (indices as the reference points), each
+    //  once, in the order of first use
+    const std::vector<int>& pointIds() const { return pointIds_; }
+
     //- Scans of fewer cells run on one thread (~0.1-0.3 us a cell)
     static constexpr std::size_t minParallelCells = 2048;
 
