@@ -79,24 +79,45 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
     }
     // the set's values at those rows as the stored matrix would give them
     // (without a patch over every point if the current matrix serves the
-    // set with a few columns more), else the set's matrix prepared
+    // set with a few columns more), else the set's matrix prepared, else
+    // (not stored) as the evaluation on the fly of every point would
     const std::size_t budget = std::size_t(settings_.evaluationMemoryMB()) << 20;
     const label dim = projection_.dim();
     double* out = &trialDisplacement_[0][0];
-    const bool made =
+    bool made =
         stored_.evaluateRowsFor
         (
             s.centres(), budget, s.weights(), s.polynomialCoeffs(),
             interiorTargets_, dim, out, trialRows_
-        )
-     || (
-            stored_.prepare(s.centres(), budget)
-         && stored_.evaluateInto
-            (
-                s.weights(), s.polynomialCoeffs(), interiorTargets_, dim, out,
-                &trialRows_
-            )
         );
+    if (!made && stored_.prepare(s.centres(), budget))
+    {
+        made = stored_.evaluateInto
+        (
+            s.weights(), s.polynomialCoeffs(), interiorTargets_, dim, out,
+            &trialRows_
+        );
+    }
+    else if (!made)
+    {
+        // as copyValues() writes them
+        const dcprbf::Points& x = distinct_.points();
+        values_.resize(trialRows_.size(), 3);
+        s.evaluateRows(x.data(), x.rows(), trialRows_, values_.data());
+        const dcprbf::StoredEvaluation::Targets& t = interiorTargets_;
+        for (std::size_t k = 0; k < trialRows_.size(); ++k)
+        {
+            const std::size_t row = trialRows_[k];
+            for (std::size_t e = t.start[row]; e < t.start[row + 1]; ++e)
+            {
+                vector& o = trialDisplacement_[t.point[e]];
+                o[0] = values_(k, 0);
+                o[1] = values_(k, 1);
+                o[2] = dim == 3 ? values_(k, 2) : 0.0;
+            }
+        }
+        made = true;
+    }
     if (!returnReduce(made, andOp<bool>()))
     {
         return false;

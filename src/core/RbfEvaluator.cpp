@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace dcprbf
 {
@@ -102,6 +103,42 @@ void RbfEvaluator::evaluate(const double* x, std::size_t n, double* out) const
     else
     {
         evaluateDense(x, n, out);
+    }
+}
+
+
+void RbfEvaluator::evaluateRows
+(
+    const double* x,
+    const std::size_t n,
+    const std::vector<int>& rows,
+    double* out
+) const
+{
+    if (centres_.rows() == 0)
+    {
+        throw Error("RBF evaluation without centres and coefficients");
+    }
+    std::vector<double> xr(3*rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k)
+    {
+        if (rows[k] < 0 || std::size_t(rows[k]) >= n)
+        {
+            throw Error
+            (
+                "RbfEvaluator::evaluateRows: point " + std::to_string(rows[k])
+              + " of " + std::to_string(n)
+            );
+        }
+        std::copy(x + 3*std::size_t(rows[k]), x + 3*std::size_t(rows[k]) + 3, &xr[3*k]);
+    }
+    if (usesTree(x, n))
+    {
+        evaluateTree(xr.data(), rows.size(), out);
+    }
+    else
+    {
+        evaluateDense(xr.data(), rows.size(), out);
     }
 }
 

@@ -55,6 +55,17 @@ public:
 
     Values evaluate(const Points& x) const;
 
+    //- evaluate(x, n, out)'s values at the listed points alone, bit for
+    //  bit (the method Auto picks for all n points; each point's sums do
+    //  not depend on the others): point rows[k] into out's row k
+    void evaluateRows
+    (
+        const double* x,
+        std::size_t n,
+        const std::vector<int>& rows,
+        double* out
+    ) const;
+
     //- The plain double loop over points and centres, one thread: the
     //  reference for tests and benchmarks
     void evaluateBruteForce(const double* x, std::size_t n, double* out) const;

@@ -55,6 +55,11 @@ bool StoredEvaluation::build(const Points& c, std::size_t budget, Slot& s) const
             }
         });
     }
+    else if ((n + 1)*sizeof(std::size_t) > budget)
+    {
+        // not even the row starts fit: no count pass
+        return false;
+    }
     else
     {
         // two passes over a tree of the centres: count, then fill

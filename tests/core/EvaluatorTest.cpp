@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <tuple>
+#include <vector>
 
 using namespace dcprbf;
 using test::randomPoints;
@@ -90,6 +91,61 @@ TEST_P(EvaluatorCase, AutoPicksTreeOnlyForSmallCompactSupport)
     const bool compact = small.kernel().compact();
     EXPECT_EQ(small.usesTree(x.data(), x.rows()), compact);
     EXPECT_FALSE(large.usesTree(x.data(), x.rows()));
+}
+
+// The method is the whole evaluation's: points mostly far from the centres
+// (a tree), the listed ones among them (alone: dense)
+TEST(RbfEvaluator, RowsTakeTheWholeEvaluationsMethod)
+{
+    const Points c = randomPoints(200, 3, 27);
+    const LinearPolynomial frame = LinearPolynomial::boundingBox(true, 3, c);
+    RbfEvaluator e(RadialKernel::fromName("WendlandC2", 0.8), frame);
+    e.assign(c, Values::Random(c.rows(), 3), Eigen::MatrixX3d::Random(frame.size(), 3));
+    Points x = randomPoints(1000, 3, 28);
+    x.array() += 5.0;                       // beyond the support
+    std::vector<int> rows;
+    for (int i = 0; i < 1000; i += 10)
+    {
+        x.row(i) = c.row(i/10);             // at a centre: most within reach
+        rows.push_back(i);
+    }
+    Points xr(rows.size(), 3);
+    for (std::size_t k = 0; k < rows.size(); ++k) xr.row(k) = x.row(rows[k]);
+    ASSERT_TRUE(e.usesTree(x.data(), x.rows()));
+    ASSERT_FALSE(e.usesTree(xr.data(), xr.rows()));
+    const Values all = e.evaluate(x);
+    Values some(rows.size(), 3);
+    e.evaluateRows(x.data(), x.rows(), rows, some.data());
+    for (std::size_t k = 0; k < rows.size(); ++k)
+    {
+        for (int q = 0; q < 3; ++q) ASSERT_EQ(some(k, q), all(rows[k], q)) << "point " << rows[k];
+    }
+}
+
+// evaluateRows gives evaluate()'s values at the listed points bit for bit,
+// with the method picked for all the points (a small and a large support:
+// tree and dense), in the order listed; a point out of range is an error
+TEST_P(EvaluatorCase, RowsEqualTheWholeEvaluationBitForBit)
+{
+    for (const double radius : {0.1, 5.0})
+    {
+        const RbfEvaluator e = make(1100, test::testRadius(name(), radius));
+        const Points x = randomPoints(1000, dim(), 26, 1.2);
+        const Values all = e.evaluate(x);
+        std::vector<int> rows;
+        for (int i = int(x.rows()) - 1; i >= 0; i -= 3) rows.push_back(i);
+        Values some(rows.size(), 3);
+        e.evaluateRows(x.data(), x.rows(), rows, some.data());
+        for (std::size_t k = 0; k < rows.size(); ++k)
+        {
+            for (int q = 0; q < 3; ++q)
+            {
+                ASSERT_EQ(some(k, q), all(rows[k], q)) << "radius " << radius << ", point " << rows[k];
+            }
+        }
+        const std::vector<int> outside{0, int(x.rows())};
+        EXPECT_THROW(e.evaluateRows(x.data(), x.rows(), outside, some.data()), Error);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P

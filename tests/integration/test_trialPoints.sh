@@ -5,7 +5,8 @@
 # series but for the times, the same points bit for bit at every written
 # time. In 2D (the front and back points of a pair), in 3D next to sliding
 # walls (a symmetryPlane meeting slip walls: their change blended into the
-# volume), and on 2 processors (the processor points synchronised).
+# volume), on 2 processors (the processor points synchronised), and with
+# the matrix stored or not.
 
 # windowEqualsAll NP: this case (selection dynamic) run as it is and, in
 # all/, with trialPoints all, on NP processors (simple decomposition, 2 1 1)
@@ -93,4 +94,15 @@ test_trialPoints_windowEqualsAll_slipDuct3D_parallel() {
     sed -i 's/selection dynamic;/selection dynamic; tolerance 3e-2;/' constant/dynamicMeshDict
     foamDictionary system/controlDict -entry writeInterval -set 5 > /dev/null
     windowEqualsAll 2
+}
+
+# the matrix not stored (evaluationMemoryMB 0): the trials' points evaluated
+# on the fly alone, as the whole evaluation would (its method)
+test_trialPoints_windowEqualsAll_slipDuct3D_onTheFly() {
+    slipDuctCase || return 1
+    sed -i 's/selection dynamic;/selection dynamic; tolerance 3e-2;/; s/supportRadius 2.5;/supportRadius 2.5; evaluationMemoryMB 0;/' \
+        constant/dynamicMeshDict
+    grep -q "evaluationMemoryMB 0;" constant/dynamicMeshDict || fail "evaluationMemoryMB 0 not set" || return 1
+    foamDictionary system/controlDict -entry writeInterval -set 5 > /dev/null
+    windowEqualsAll 1
 }
