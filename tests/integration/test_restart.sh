@@ -18,15 +18,20 @@ motionRun() {
 # between writes; run to t = 1 here; in restart/, run to 0.5, restart from
 # 0.5 to 1; the points at 1 agree to round-off (1e-14 of the domain size).
 # NP = 2: both runs on 2 processors (simple decomposition), reconstructed
-restartEqualsUninterrupted() {
-    local np="${1:-1}"
-    foamDictionary system/controlDict -entry writePrecision -set 17 > /dev/null
-    foamDictionary system/controlDict -entry writeInterval -set 5 > /dev/null
+# writeSimpleDecomposition: system/decomposeParDict, 2 processors split in x
+writeSimpleDecomposition() {
     writeFile system/decomposeParDict dictionary <<'EOT'
 numberOfSubdomains 2;
 method simple;
 coeffs { n (2 1 1); }
 EOT
+}
+
+restartEqualsUninterrupted() {
+    local np="${1:-1}"
+    foamDictionary system/controlDict -entry writePrecision -set 17 > /dev/null
+    foamDictionary system/controlDict -entry writeInterval -set 5 > /dev/null
+    writeSimpleDecomposition
     mkdir -p restart
     cp -r constant system 0 restart/
     motionRun "$np" || return 1

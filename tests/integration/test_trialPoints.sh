@@ -17,11 +17,7 @@ windowEqualsAll() {
     # library loaded with the controlDict: its debug switch is set then)
     foamDictionary system/controlDict -entry libs -set '("libdcpRBF.so")' > /dev/null
     foamDictionary system/controlDict -entry DebugSwitches -set "{ dcpRBF 1; }" > /dev/null
-    writeFile system/decomposeParDict dictionary <<'EOT'
-numberOfSubdomains 2;
-method simple;
-coeffs { n (2 1 1); }
-EOT
+    writeSimpleDecomposition
     mkdir -p all
     cp -r constant system 0 all/
     sed -i 's/selection dynamic;/selection dynamic; trialPoints all;/' all/constant/dynamicMeshDict
