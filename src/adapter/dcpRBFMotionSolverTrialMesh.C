@@ -67,8 +67,8 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
     }
     std::sort(trialRows_.begin(), trialRows_.end());
 
-    // (the trial's field starts as the current displacement: every value
-    // finite where it is not made)
+    // (the trial's field starts as the displacement of its first use:
+    // every value finite where it is not made, never read there)
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
     if (trialDisplacement_.size() != disp.size())
     {
@@ -99,8 +99,8 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
     {
         // as copyValues() writes them
         const dcprbf::Points& x = distinct_.points();
-        values_.resize(trialRows_.size(), 3);
-        s.evaluateRows(x.data(), x.rows(), trialRows_, values_.data());
+        trialValues_.resize(trialRows_.size(), 3);
+        s.evaluateRows(x.data(), x.rows(), trialRows_, trialValues_.data());
         const dcprbf::StoredEvaluation::Targets& t = interiorTargets_;
         for (std::size_t k = 0; k < trialRows_.size(); ++k)
         {
@@ -108,9 +108,9 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
             for (std::size_t e = t.start[row]; e < t.start[row + 1]; ++e)
             {
                 vector& o = trialDisplacement_[t.point[e]];
-                o[0] = values_(k, 0);
-                o[1] = values_(k, 1);
-                o[2] = dim == 3 ? values_(k, 2) : 0.0;
+                o[0] = trialValues_(k, 0);
+                o[1] = trialValues_(k, 1);
+                o[2] = dim == 3 ? trialValues_(k, 2) : 0.0;
             }
         }
         made = true;

@@ -243,6 +243,7 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
         p.start.swap(patch_.start);
         p.entry.swap(patch_.entry);
         p.value.swap(patch_.value);
+        patch_.base = -1;               // (no patch until this one is made)
         p.start.resize(n + 1);
         p.start[0] = 0;
         Points cNew(nNew, 3);

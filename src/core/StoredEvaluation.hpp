@@ -82,8 +82,10 @@ public:
     //  that a patch of the current slot would serve has its new centres'
     //  kernel values made at those rows alone (a trial swap's mesh at a
     //  few cells: no column over every point). False, nothing written,
-    //  for a set prepare() would build, refuse or patch from the other
-    //  slot, whose patch might exceed the budget, or a dense matrix
+    //  for a set prepare() would build, refuse, take from the other slot
+    //  or patch from it, whose patch might exceed the budget, or a dense
+    //  matrix: where prepare() would change which slot is current (the
+    //  sets after it are patched from that one)
     bool evaluateRowsFor
     (
         const Points& centres,

@@ -35,7 +35,9 @@ bool StoredEvaluation::evaluateRowsFor
     {
         if (slots_[k].used && same(slots_[k].centres))
         {
-            if (slots_[k].dense.size())
+            // (the other slot: prepare() would make it current, and later
+            // sets would be patched from it)
+            if (k != current_ || slots_[k].dense.size())
             {
                 return false;
             }
@@ -48,8 +50,13 @@ bool StoredEvaluation::evaluateRowsFor
     }
 
     // a patch of the current slot, sure to fit the budget (with every row
-    // in each new column); anything else is prepare()'s to decide
-    if (current_ < 0 || !slots_[current_].used || slots_[current_].dense.size())
+    // in each new column); anything else is prepare()'s to decide (a set
+    // refused before with no more room among it)
+    if
+    (
+        current_ < 0 || !slots_[current_].used || slots_[current_].dense.size()
+     || (same(refused_) && budgetBytes <= refusedBudget_)
+    )
     {
         return false;
     }

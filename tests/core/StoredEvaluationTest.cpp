@@ -454,7 +454,7 @@ TEST(StoredEvaluation, EvaluateRowsForEqualsPrepareThenEvaluate)
     both(cB);
     both(swapped(cB, {5}, 30));
     check(cB, "the current slot beside a patch");
-    check(c, "the other slot's set");
+    check(c, "the other slot's set: prepare() would make it current", false);
     check(swapped(cB, {5}, 30), "the current patch's set again");
     check(swapped(cB, {5, 6}, 30), "a patch of the current slot beside its patch");
     check(swapped(c, {1}), "a patch of the other slot", false);
@@ -467,6 +467,23 @@ TEST(StoredEvaluation, EvaluateRowsForEqualsPrepareThenEvaluate)
     EXPECT_TRUE(std::all_of(out.begin(), out.end(), [](double v) { return v == -1.0; }));
     const std::vector<int> outside{int(x.rows())};
     EXPECT_THROW(s.evaluateRowsFor(cB, budget, alpha, beta, t, 3, out.data(), outside), Error);
+
+    // a set refused before with no more room (both slots counted then;
+    // one of them dropped): prepare() refuses it again at once, so must
+    // this, though a patch of the current slot would now fit
+    {
+        StoredEvaluation onlyC(k, frame, x), onlyB(k, frame, x), u(k, frame, x);
+        ASSERT_TRUE(onlyC.prepare(c, budget));
+        ASSERT_TRUE(onlyB.prepare(cB, budget));
+        const std::size_t tight = onlyB.bytes() + onlyC.bytes()/2;
+        ASSERT_TRUE(u.prepare(c, budget));
+        ASSERT_TRUE(u.prepare(cB, budget));
+        const Points refusedSet = swapped(cB, {1}, 36);
+        EXPECT_FALSE(u.prepare(refusedSet, tight));
+        ASSERT_TRUE(u.prepare(cB, tight));          // the slot left
+        EXPECT_FALSE(u.evaluateRowsFor(refusedSet, tight, alpha, beta, t, 3, out.data(), rows));
+        EXPECT_FALSE(u.prepare(refusedSet, tight));
+    }
 
     // a dense matrix: refused
     StoredEvaluation dense(RadialKernel::fromName("Gaussian", 0.5), frame, x);

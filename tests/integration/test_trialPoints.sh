@@ -34,10 +34,10 @@ windowEqualsAll() {
         || fail "no trial made at the window's points" || return 1
     ! grep -q "trials at" "all/$log" \
         || fail "trialPoints all: trials made at the window's points" || return 1
-    awk '!/^#/ { kept += $3; undone += $15; if ($3 > most) most = $3 }
+    awk '/^Time = / { n = 0 } / trial swap on .*, kept$/ { if (++n > most) most = n; kept++ }
+         / trial swap on .*, undone$/ { undone++ }
          END { print kept " trials kept (at most " most " in a step), " undone " undone";
-               exit !(most >= 2 && undone >= 1) }' \
-        postProcessing/dcpRBF/0/dcpRBF.dat \
+               exit !(most >= 2 && undone >= 1) }' "$log" \
         || fail "no step with two kept trials, or none undone" || return 1
 
     # every trial's window minimum and the minimum it had to beat
