@@ -12,8 +12,6 @@ Description
 
 #include "dcpRBFControlPoints.H"
 
-#include <algorithm>
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 bool Foam::dcpRBFControlPoints::canTrial(const bool rescue) const
@@ -99,8 +97,7 @@ void Foam::dcpRBFControlPoints::undoSwap(const dcprbf::Values& d)
 Foam::label Foam::dcpRBFControlPoints::endTrials
 (
     const dcprbf::Values& d,
-    const bool blend,
-    const bool nextStep
+    const bool blend
 )
 {
     if (!stepFrom_)
@@ -121,46 +118,10 @@ Foam::label Foam::dcpRBFControlPoints::endTrials
     if (blend && settings_.selection().swapBlendSteps > 1)
     {
         blendFrom_.reset(new dcprbf::DynamicControlSet::State(*stepFrom_));
-        blendStep_ = nextStep ? 0 : 1;
+        blendStep_ = 1;
         solve(d);
     }
     return kept;
-}
-
-
-void Foam::dcpRBFControlPoints::solveBlendOrigin(const dcprbf::Values& d)
-{
-    blendTo_.reset(new dcprbf::DynamicControlSet::State(set_.state()));
-    set_.restore(*blendFrom_);
-    std::unique_ptr<dcprbf::DynamicControlSet::State> from(std::move(blendFrom_));
-    solve(d);
-    blendFrom_ = std::move(from);
-}
-
-
-void Foam::dcpRBFControlPoints::solveBlend(const dcprbf::Values& d)
-{
-    set_.restore(*blendTo_);
-    blendTo_.reset();
-    solve(d);
-}
-
-
-Foam::label Foam::dcpRBFControlPoints::abandonBlend()
-{
-    // the set before the swaps is in place and solved (solveBlendOrigin)
-    label nSwaps = 0;
-    for (const Eigen::Index i : blendTo_->indices)
-    {
-        nSwaps +=
-            std::find(blendFrom_->indices.begin(), blendFrom_->indices.end(), i)
-         == blendFrom_->indices.end();
-    }
-    blendTo_.reset();
-    blendFrom_.reset();
-    updated_ = true;
-    backOff();
-    return nSwaps;
 }
 
 

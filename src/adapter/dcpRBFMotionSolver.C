@@ -316,9 +316,7 @@ void Foam::dcpRBFMotionSolver::solve()
         measureQuality(r);
         r.guardTime = timer.timeIncrement();
 
-        // 4. swapRule errorGuided: a blend's first step better than no
-        //    swaps, or they are given up; a trial swap, kept if it helps
-        checkBlendStart(d, r);
+        // 4. swapRule errorGuided: a trial swap, kept if it helps
         trySwaps(d, r);
         r.swapTime += timer.timeIncrement();
 

@@ -46,15 +46,11 @@ void Foam::dcpRBFMotionSolver::trySwaps
     // Trials judged on the worst cells and those around the leaving points
     const label nWindow =
         max(minTrialWindow, label(trialWindowFraction*lastQuality_.nCells));
-    autoPtr<dcpRBFTrialWindow> windowPtr
+    dcpRBFTrialWindow window
     (
-        new dcpRBFTrialWindow
-        (
-            mesh(), region_, lastQuality_.quality, nWindow, points0(),
-            settings_.metric()
-        )
+        mesh(), region_, lastQuality_.quality, nWindow, points0(),
+        settings_.metric()
     );
-    dcpRBFTrialWindow& window = windowPtr();
     dcpRBFQualityRegion::rankedCell worst(lastQuality_.worst[0]);
     // the mesh of the set kept so far: at every point (complete), or, once
     // a trial made at the window's points alone is kept, at those
@@ -191,28 +187,12 @@ void Foam::dcpRBFMotionSolver::trySwaps
             break;
         }
     }
-    // The kept swaps' blend starts at the next step (the paper's order),
-    // unless they apply at once (rescue, swapBlendSteps 1) or the guard
-    // will add points this step
-    const bool nextStep =
-        !rescue && settings_.selection().swapBlendSteps > 1
-     && lastQuality_.minQuality >= settings_.qualityFloor();
-    const label kept = controlPoints_.endTrials(d, !rescue, nextStep);
+    const label kept = controlPoints_.endTrials(d, !rescue);
     if (windowed)
     {
         r.trialPoints = returnReduce(window.points().size(), sumOp<label>());
     }
-    if (kept && nextStep)
-    {
-        // this step writes the mesh without them (measured); the next
-        // checks its blend's first step against it, on this window first
-        r.nAdded += kept;
-        r.nRemoved += kept;
-        r.boundaryError = noSwapRecord.boundaryError;
-        blendWindow_ = std::move(windowPtr);
-        blendWindowIndex_ = mesh().time().timeIndex();
-    }
-    if ((kept && nextStep) || (!kept && !blend.from))
+    if (!kept && !blend.from)
     {
         // the mesh without swaps (every trial undone), measured in
         // lastQuality_ and lastPoints_

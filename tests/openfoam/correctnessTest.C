@@ -476,55 +476,6 @@ TEST(ErrorGuidedBlend, PhasedInSwapsKeepTheMeshVelocitySmooth)
     EXPECT_LT(largestJerk(phased), 0.5*largestJerk(atOnce));
 }
 
-// Kept swaps start their blend at the next step (the paper's order): the
-// step whose trials keep them writes the mesh without them, bit for bit the
-// mesh of the same run without trials (nSwap 0); the next step's differs.
-// With swapBlendSteps 1 they apply at once: that step's mesh differs
-TEST(ErrorGuidedBlend, KeptSwapsStartTheirBlendAtTheNextStep)
-{
-    const std::string fixedN =
-        "selection dynamic; tolerance 1e-12; minPoints 12; maxPoints 12;"
-        " reselectTolerance 1e9; protectSteps 0;";
-    const label nSteps = 8;
-    const bumpRun none(runBump(fixedN + " nSwap 0;", nSteps));
-    const auto differs = [&](const bumpRun& b, const label s)
-    {
-        scalar d = 0;
-        forAll(b.points[s], i) d = max(d, mag(b.points[s][i] - none.points[s][i]));
-        return d;
-    };
-    for (const label blendSteps : {4, 1})
-    {
-        const bumpRun b
-        (
-            runBump(fixedN + " nSwap 1; swapBlendSteps " + std::to_string(blendSteps) + ";", nSteps)
-        );
-        label first = -1;
-        for (label s = 0; s < nSteps && first < 0; ++s)
-        {
-            if (b.rows[s][cAdded] > 0) first = s;
-        }
-        ASSERT_GE(first, 0) << "no swap kept";
-        ASSERT_LT(first, nSteps - 1);
-        for (label s = 0; s < first; ++s)
-        {
-            EXPECT_EQ(differs(b, s), 0) << "step " << s + 1 << ", before any swap";
-        }
-        if (blendSteps > 1)
-        {
-            EXPECT_EQ(differs(b, first), 0) << "step " << first + 1
-                << ": the kept swaps' blend started at once";
-            EXPECT_GT(differs(b, first + 1), 1e-9) << "step " << first + 2
-                << ": the blend did not start after the trial step";
-        }
-        else
-        {
-            EXPECT_GT(differs(b, first), 1e-9) << "step " << first + 1
-                << ": swapBlendSteps 1, the swaps did not apply at once";
-        }
-    }
-}
-
 // Stored kernel matrices (evaluationMemoryMB, default: the product written
 // straight to the points, in 2D to both twins) and evaluation on the fly
 // (0) move the mesh the same, over steps where the set changes (patched
