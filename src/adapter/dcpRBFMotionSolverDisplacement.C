@@ -102,6 +102,23 @@ void Foam::dcpRBFMotionSolver::constrainInterpolated()
 }
 
 
+bool Foam::dcpRBFMotionSolver::writesRowsToPoints() const
+{
+    return
+        !rotation_.active()
+     && projection_.axis(0) == 0 && projection_.axis(1) == 1 && projection_.axis(2) == 2;
+}
+
+
+void Foam::dcpRBFMotionSolver::insertPrescribed(vectorField& disp) const
+{
+    for (const label pointi : boundaryMeshPoints_)
+    {
+        disp[pointi] = prescribed_[pointi];
+    }
+}
+
+
 void Foam::dcpRBFMotionSolver::copyValues
 (
     const dcprbf::Values& v,
@@ -169,8 +186,7 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
     if
     (
-        stored && !rotation_.active() && disp.size()
-     && projection_.axis(0) == 0 && projection_.axis(1) == 1 && projection_.axis(2) == 2
+        stored && writesRowsToPoints() && disp.size()
      && stored_.evaluateInto
         (
             s.weights(), s.polynomialCoeffs(), interiorTargets_, projection_.dim(),
@@ -182,10 +198,7 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
         // axes are the mesh's: one product written straight to the
         // interior points (in 2D to both twins of a distinct point), then
         // the prescribed
-        for (const label pointi : boundaryMeshPoints_)
-        {
-            disp[pointi] = prescribed_[pointi];
-        }
+        insertPrescribed(disp);
     }
     else
     {

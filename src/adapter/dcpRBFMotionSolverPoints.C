@@ -52,10 +52,7 @@ void Foam::dcpRBFMotionSolver::finishDisplacement()
         }
     }
     constrain();
-    for (const label pointi : boundaryMeshPoints_)
-    {
-        disp[pointi] = prescribed_[pointi];
-    }
+    insertPrescribed(disp);
     for (label i = 0; pointsMeasured_ && i < finishedPoints_.size(); ++i)
     {
         // bitwise, as the measured points were made

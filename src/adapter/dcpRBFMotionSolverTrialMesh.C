@@ -33,18 +33,17 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
     const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
     if
     (
-        rotation_.active()
-     || projection_.axis(0) != 0 || projection_.axis(1) != 1 || projection_.axis(2) != 2
+        !writesRowsToPoints()
      || !returnReduce(pointDisplacement_.size() > 0, andOp<bool>())
     )
     {
         return false;
     }
-    // the distinct rows of the interior points among them, ascending
+    // the distinct rows of the interior points among them and of
+    // finishedPoints_ (those once, at the first trial: marked 1 for good),
+    // ascending
     const dcpRBFBoundaryPoints::pointKind* kind = boundaryPoints_.kinds().cdata();
-    rowMarks_.resize(distinct_.points().rows(), 0);
-    trialRows_.clear();
-    const auto addRows = [&](const labelUList& pts)
+    const auto addRows = [&](const labelUList& pts, const char mark)
     {
         for (const label pointi : pts)
         {
@@ -53,19 +52,29 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
                 const label row = distinct_.of(pointi);
                 if (!rowMarks_[row])
                 {
-                    rowMarks_[row] = 1;
+                    rowMarks_[row] = mark;
                     trialRows_.push_back(int(row));
                 }
             }
         }
+        std::sort(trialRows_.begin(), trialRows_.end());
     };
-    addRows(points);
-    addRows(finishedPoints_);
+    if (rowMarks_.empty())
+    {
+        rowMarks_.resize(distinct_.points().rows(), 0);
+        trialRows_.clear();
+        addRows(finishedPoints_, 1);
+        finishedRows_ = trialRows_;
+    }
+    trialRows_.clear();
+    addRows(points, 2);
     for (const int row : trialRows_)
     {
         rowMarks_[row] = 0;
     }
-    std::sort(trialRows_.begin(), trialRows_.end());
+    const std::ptrdiff_t nWindow = trialRows_.size();
+    trialRows_.insert(trialRows_.end(), finishedRows_.begin(), finishedRows_.end());
+    std::inplace_merge(trialRows_.begin(), trialRows_.begin() + nWindow, trialRows_.end());
 
     // (the trial's field starts as the displacement of its first use:
     // every value finite where it is not made, never read there)
@@ -97,21 +106,13 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
     }
     else if (!made)
     {
-        // as copyValues() writes them
+        // to the rows' points as the stored product writes them
         const dcprbf::Points& x = distinct_.points();
         trialValues_.resize(trialRows_.size(), 3);
         s.evaluateRows(x.data(), x.rows(), trialRows_, trialValues_.data());
-        const dcprbf::StoredEvaluation::Targets& t = interiorTargets_;
         for (std::size_t k = 0; k < trialRows_.size(); ++k)
         {
-            const std::size_t row = trialRows_[k];
-            for (std::size_t e = t.start[row]; e < t.start[row + 1]; ++e)
-            {
-                vector& o = trialDisplacement_[t.point[e]];
-                o[0] = trialValues_(k, 0);
-                o[1] = trialValues_(k, 1);
-                o[2] = dim == 3 ? trialValues_(k, 2) : 0.0;
-            }
+            interiorTargets_.write(trialRows_[k], trialValues_.row(k).data(), dim, out);
         }
         made = true;
     }
@@ -119,10 +120,7 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
     {
         return false;
     }
-    for (const label pointi : boundaryMeshPoints_)
-    {
-        trialDisplacement_[pointi] = prescribed_[pointi];
-    }
+    insertPrescribed(trialDisplacement_);
 
     // the correction and the constraints on the trial's field, in place of
     // the displacement's (exchanged, not copied)

@@ -178,7 +178,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
         // the set as before the trial: so is the displacement if the trial
         // did not change it
         controlPoints_.undoSwap(d);
-        fieldIsSet = fieldIsSet ? false : setBefore;
+        fieldIsSet = !fieldIsSet && setBefore;
         r.boundaryError = error0;
         ++r.nUndone;
         // rescue: the next leaving point instead, a few times

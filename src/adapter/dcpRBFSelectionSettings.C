@@ -47,6 +47,17 @@ const Foam::wordList Foam::dcpRBFSelectionSettings::keywords
     "swapBlendSteps", "trialPoints"
 });
 
+namespace
+{
+    //- The keywords of selection dynamic alone, and of its swapRule
+    //  errorGuided alone
+    const Foam::wordList dynamicKeywords
+    ({
+        "nSwap", "protectSteps", "swapRule", "swapBlendSteps", "trialPoints"
+    });
+    const Foam::wordList errorGuidedKeywords({"swapBlendSteps", "trialPoints"});
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -74,7 +85,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     protectSteps = r.getLabel("protectSteps", 3, 0, 1000000);
     swapBlendSteps = r.getLabel("swapBlendSteps", 4, 1, 1000);
     trialAt = r.getEnum("trialPoints", trialPointsNames, trialPoints::window);
-    for (const word k : {"swapBlendSteps", "trialPoints"})
+    for (const word& k : errorGuidedKeywords)
     {
         if (swapRule == rule::nearest && dict.found(k))
         {
@@ -90,9 +101,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
         {
             if (k != "selection" && dict.found(k))
             {
-                const bool dynamicOnly =
-                    k == "nSwap" || k == "protectSteps" || k == "swapRule"
-                 || k == "swapBlendSteps" || k == "trialPoints";
+                const bool dynamicOnly = dynamicKeywords.found(k);
                 FatalIOErrorInFunction(dict)
                     << "Keyword " << k << " has no effect with selection all."
                     << " Allowed selections using it: "
@@ -103,11 +112,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     }
     if (selection != mode::dynamic)
     {
-        for
-        (
-            const word k
-          : {"nSwap", "protectSteps", "swapRule", "swapBlendSteps", "trialPoints"}
-        )
+        for (const word& k : dynamicKeywords)
         {
             if (dict.found(k))
             {

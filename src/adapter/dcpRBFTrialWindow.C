@@ -121,16 +121,11 @@ Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::localWorst
 (
     const dcpRBFCellQuality& quality,
     const labelUList& positions,
-    const pointField& p,
-    scalar* sum
+    const pointField& p
 ) const
 {
     // none here: above every quality
     const scalarField q(quality.compute(p));
-    if (sum)
-    {
-        *sum += Foam::sum(q);
-    }
     const List<FixedList<scalar, 3>>& centres = region_.centres();
     dcpRBFQualityRegion::rankedCell w({VGREAT, 0, 0, 0});
     forAll(q, i)
@@ -233,9 +228,9 @@ Foam::dcpRBFTrialWindow::worst(const pointField& p) const
 Foam::scalar Foam::dcpRBFTrialWindow::sum(const pointField& p) const
 {
     scalar s = 0;
-    forAll(scans_, i)
+    for (const dcpRBFCellQuality& quality : scans_)
     {
-        localWorst(scans_[i], chunks_[i], p, &s);
+        s += Foam::sum(quality.compute(p));
     }
     return returnReduce(s, sumOp<scalar>());
 }

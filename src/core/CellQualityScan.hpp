@@ -94,6 +94,9 @@ private:
     //- Its inverse (the stored position of each caller index), made on
     //  the first subset constructed from this scan
     mutable std::vector<int> position_;
+    //- A subset's numbering of these points, -1 between subsets (only the
+    //  entries a subset set are reset: no pass over every point per subset)
+    mutable std::vector<int> subsetPoint_;
 
     //- Per cell: its kind, and its first vertex in vertices_ (tetrahedra,
     //  prisms) or its row in the general cells' topology

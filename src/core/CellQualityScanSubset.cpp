@@ -45,13 +45,23 @@ CellQualityScan::CellQualityScan
         }
     }
 
-    // from's points renumbered in the order the cells use them
-    std::vector<int> local(from.pointIds_.size(), -1);
+    // from's points renumbered in the order the cells use them (from's
+    // scratch numbering, reset below where set)
+    std::vector<int>& local = from.subsetPoint_;
+    local.resize(from.pointIds_.size(), -1);
+    std::vector<int> fromPoint;
+    struct reset
+    {
+        std::vector<int>& local;
+        const std::vector<int>& set;
+        ~reset() { for (const int p : set) local[std::size_t(p)] = -1; }
+    } resetLocal{local, fromPoint};
     const auto point = [&](const int p)
     {
         if (local[std::size_t(p)] < 0)
         {
             local[std::size_t(p)] = int(pointIds_.size());
+            fromPoint.push_back(p);
             pointIds_.push_back(from.pointIds_[std::size_t(p)]);
             const double* x0 = &from.points0_[3*std::size_t(p)];
             points0_.insert(points0_.end(), x0, x0 + 3);

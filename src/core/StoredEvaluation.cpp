@@ -117,7 +117,11 @@ bool StoredEvaluation::build(const Points& c, std::size_t budget, Slot& s) const
 }
 
 
-bool StoredEvaluation::prepare(const Points& centres, std::size_t budgetBytes)
+StoredEvaluation::Plan StoredEvaluation::plan
+(
+    const Points& centres,
+    const std::size_t budgetBytes
+) const
 {
     const auto same = [&](const Points& c)
     {
@@ -125,25 +129,42 @@ bool StoredEvaluation::prepare(const Points& centres, std::size_t budgetBytes)
     };
     if (patch_.base >= 0 && same(patch_.centres))
     {
-        return true;
+        return {Step::currentPatch, current_};
     }
     for (int k = 0; k < 2; ++k)
     {
-        const Slot& s = slots_[k];
-        if (s.used && same(s.centres))
+        if (slots_[k].used && same(slots_[k].centres))
         {
-            current_ = k;
-            patch_ = Patch();
-            return true;
+            return {Step::slot, k};
         }
     }
     // refused before with no more room: refused again at once (a step
     // whose set does not fit does not pay the count pass again)
     if (same(refused_) && budgetBytes <= refusedBudget_)
     {
-        current_ = -1;
-        patch_ = Patch();
-        return false;
+        return {Step::refused};
+    }
+    return {Step::patchOrBuild};
+}
+
+
+bool StoredEvaluation::prepare(const Points& centres, std::size_t budgetBytes)
+{
+    const Plan pl = plan(centres, budgetBytes);
+    switch (pl.step)
+    {
+        case Step::currentPatch:
+            return true;
+        case Step::slot:
+            current_ = pl.slot;
+            patch_ = Patch();
+            return true;
+        case Step::refused:
+            current_ = -1;
+            patch_ = Patch();
+            return false;
+        case Step::patchOrBuild:
+            break;
     }
     // a patch of the current slot, else of the other
     for (const int k : {current_, 1 - current_})
@@ -171,6 +192,25 @@ bool StoredEvaluation::prepare(const Points& centres, std::size_t budgetBytes)
     ++builds_;
     current_ = k;
     return true;
+}
+
+
+Points StoredEvaluation::Patch::newCentres() const
+{
+    Points c(centre.size(), 3);
+    for (std::size_t e = 0; e < centre.size(); ++e) c.row(e) = centres.row(centre[e]);
+    return c;
+}
+
+
+std::size_t StoredEvaluation::patchBytes(const Patch& p, const std::size_t nnz) const
+{
+    // (the rows' starts only for new columns: a patch that only removes
+    // centres has none)
+    return
+        slots_[0].bytes() + slots_[1].bytes() + p.column.size()*sizeof(int)
+      + (p.centre.empty() ? 0 : (std::size_t(x_.rows()) + 1)*sizeof(std::uint32_t))
+      + nnz*(1 + sizeof(double));
 }
 
 
@@ -222,13 +262,9 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
     {
         return false;
     }
-    // (the rows' starts only for new columns: a patch that only removes
-    // centres has none)
     const std::ptrdiff_t n = x_.rows();
     const std::size_t nNew = p.centre.size();
-    std::size_t bytes =
-        slots_[k].bytes() + slots_[1 - k].bytes() + p.column.size()*sizeof(int)
-      + (nNew ? (n + 1)*sizeof(std::uint32_t) : 0);
+    std::size_t bytes = patchBytes(p, 0);
     if (bytes > budget)
     {
         return false;
@@ -246,8 +282,7 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
         patch_.base = -1;               // (no patch until this one is made)
         p.start.resize(n + 1);
         p.start[0] = 0;
-        Points cNew(nNew, 3);
-        for (std::size_t e = 0; e < nNew; ++e) cNew.row(e) = c.row(p.centre[e]);
+        const Points cNew(p.newCentres());
         const double R2 = kernel_.compact() ? kernel_.radius()*kernel_.radius() : -1;
         std::size_t nnz = 0;
         kernel_.visit([&](const auto& phi)
@@ -255,20 +290,14 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
             #pragma omp parallel for schedule(static) if(n >= minParallelRows)
             for (std::ptrdiff_t i = 0; i < n; ++i)
             {
-                std::uint32_t m = 0;
-                double v;
-                for (std::size_t e = 0; e < nNew; ++e)
-                {
-                    m += entry(phi, R2, &x_(i, 0), &cNew(e, 0), v);
-                }
-                p.start[i + 1] = m;
+                p.start[i + 1] = newEntries(phi, R2, &x_(i, 0), cNew, [](std::size_t, double) {});
             }
             for (std::ptrdiff_t i = 0; i < n; ++i)
             {
                 nnz += p.start[i + 1];
                 p.start[i + 1] = std::uint32_t(nnz);
             }
-            bytes += nnz*(1 + sizeof(double));
+            bytes = patchBytes(p, nnz);
             if (bytes > budget || nnz > std::numeric_limits<std::uint32_t>::max())
             {
                 return;
@@ -279,15 +308,11 @@ bool StoredEvaluation::patch(int k, const Points& c, std::size_t budget)
             for (std::ptrdiff_t i = 0; i < n; ++i)
             {
                 std::uint32_t at = p.start[i];
-                double v;
-                for (std::size_t e = 0; e < nNew; ++e)
+                newEntries(phi, R2, &x_(i, 0), cNew, [&](const std::size_t e, const double v)
                 {
-                    if (entry(phi, R2, &x_(i, 0), &cNew(e, 0), v))
-                    {
-                        p.entry[at] = std::uint8_t(e);
-                        p.value[at++] = v;
-                    }
-                }
+                    p.entry[at] = std::uint8_t(e);
+                    p.value[at++] = v;
+                });
             }
         });
         if (bytes > budget || nnz > std::numeric_limits<std::uint32_t>::max())

@@ -58,6 +58,17 @@ public:
     {
         std::vector<std::size_t> start;
         std::vector<int> point;
+
+        //- Row i's value v to its targets: the first `components` of v,
+        //  the others 0
+        void write(std::size_t i, const double* v, int components, double* out) const
+        {
+            for (std::size_t k = start[i]; k < start[i + 1]; ++k)
+            {
+                double* o = out + 3*std::size_t(point[k]);
+                for (int q = 0; q < 3; ++q) o[q] = q < components ? v[q] : 0.0;
+            }
+        }
     };
 
     //- evaluate()'s values, bit for bit, written straight to their
@@ -148,7 +159,32 @@ private:
         std::vector<std::uint8_t> entry;
         std::vector<double> value;
         std::size_t bytes() const;
+        //- The centres without a column, in the order of centre
+        Points newCentres() const;
     };
+
+    //- What prepare() does for a set, first: it is the current patch's,
+    //  a slot's (slot), refused before with no more room, or to be
+    //  patched (from the current slot, else the other) or built
+    enum class Step { currentPatch, slot, refused, patchOrBuild };
+    struct Plan
+    {
+        Step step;
+        int slot = -1;
+    };
+    Plan plan(const Points& centres, std::size_t budgetBytes) const;
+
+    //- Bytes held with patch p of nnz entries in place of the current
+    //  patch (both slots counted)
+    std::size_t patchBytes(const Patch& p, std::size_t nnz) const;
+
+    //- Row x's entries in the new centres cNew, in their order:
+    //  emit(e, value) for each within the support; returns their count
+    template<class Phi, class Emit>
+    static std::uint32_t newEntries
+    (
+        const Phi& phi, double R2, const double* x, const Points& cNew, Emit emit
+    );
 
     //- Build the matrix of these centres into s; false (s emptied) if it
     //  would take more than budget bytes
@@ -259,6 +295,29 @@ inline bool StoredEvaluation::entry
     const bool within = R2 < 0 || r2 < R2;
     value = within ? phi.ofSquared(r2) : 0.0;
     return within;
+}
+
+template<class Phi, class Emit>
+inline std::uint32_t StoredEvaluation::newEntries
+(
+    const Phi& phi,
+    const double R2,
+    const double* x,
+    const Points& cNew,
+    Emit emit
+)
+{
+    std::uint32_t m = 0;
+    double v;
+    for (Eigen::Index e = 0; e < cNew.rows(); ++e)
+    {
+        if (entry(phi, R2, x, &cNew(e, 0), v))
+        {
+            emit(std::size_t(e), v);
+            ++m;
+        }
+    }
+    return m;
 }
 
 } // namespace dcprbf

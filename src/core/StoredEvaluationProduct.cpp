@@ -136,12 +136,7 @@ void StoredEvaluation::product
         }
         if (scatter)
         {
-            const Targets& t = scatter->targets;
-            for (std::size_t k = t.start[i]; k < t.start[i + 1]; ++k)
-            {
-                double* o = scatter->out + 3*std::size_t(t.point[k]);
-                for (int q = 0; q < 3; ++q) o[q] = q < scatter->components ? v[q] : 0.0;
-            }
+            scatter->targets.write(std::size_t(i), v, scatter->components, scatter->out);
         }
         else
         {

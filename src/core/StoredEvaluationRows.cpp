@@ -20,57 +20,42 @@ bool StoredEvaluation::evaluateRowsFor
     const std::vector<int>& rows
 ) const
 {
-    // the cases of prepare(), in its order. Stored as they are: the current
-    // patch, or a slot of these centres
+    // as prepare() would: stored as they are (the current patch, or the
+    // current slot of these centres), or a patch of the current slot sure
+    // to fit the budget (with every row in each new column). Anything else
+    // (another slot: prepare() would make it current, and later sets would
+    // be patched from it; a set refused before; a build) is prepare()'s
     checkTargets(targets, &rows);
-    const auto same = [&](const Points& c)
-    {
-        return c.rows() == centres.rows() && c == centres;
-    };
-    if (patch_.base >= 0 && same(patch_.centres))
+    const Plan pl = plan(centres, budgetBytes);
+    if (pl.step == Step::currentPatch)
     {
         return evaluateInto(alpha, beta, targets, components, out, &rows);
     }
-    for (int k = 0; k < 2; ++k)
-    {
-        if (slots_[k].used && same(slots_[k].centres))
-        {
-            // (the other slot: prepare() would make it current, and later
-            // sets would be patched from it)
-            if (k != current_ || slots_[k].dense.size())
-            {
-                return false;
-            }
-            // the slot without a patch
-            const Scatter scatter{targets, components, out};
-            Values unused;
-            productOf(slots_[k], Patch(), false, alpha, beta, unused, &scatter, &rows);
-            return true;
-        }
-    }
-
-    // a patch of the current slot, sure to fit the budget (with every row
-    // in each new column); anything else is prepare()'s to decide (a set
-    // refused before with no more room among it)
     if
     (
-        current_ < 0 || !slots_[current_].used || slots_[current_].dense.size()
-     || (same(refused_) && budgetBytes <= refusedBudget_)
+        current_ < 0 || slots_[current_].dense.size()
+     || (pl.step == Step::slot && pl.slot != current_)
+     || pl.step == Step::refused
     )
     {
         return false;
     }
-    Patch p;
-    if (!planPatch(current_, centres, p))
+    const Scatter scatter{targets, components, out};
+    Values unused;
+    if (pl.step == Step::slot)
     {
-        return false;
+        // the current slot without a patch
+        productOf(slots_[current_], Patch(), false, alpha, beta, unused, &scatter, &rows);
+        return true;
     }
+    Patch p;
     const std::size_t n = std::size_t(x_.rows());
-    const std::size_t nNew = p.centre.size();
-    const std::size_t most =
-        slots_[0].bytes() + slots_[1].bytes() + p.column.size()*sizeof(int)
-      + (nNew ? (n + 1)*sizeof(std::uint32_t) : 0) + nNew*n*(1 + sizeof(double));
-    if (most > budgetBytes || nNew*n > std::numeric_limits<std::uint32_t>::max())
+    if
+    (
+        !slots_[current_].used || !planPatch(current_, centres, p)
+     || patchBytes(p, p.centre.size()*n) > budgetBytes
+     || p.centre.size()*n > std::numeric_limits<std::uint32_t>::max()
+    )
     {
         return false;
     }
@@ -78,25 +63,20 @@ bool StoredEvaluation::evaluateRowsFor
     // the new centres' entries at the listed rows alone, by position, in
     // the order of the patch's centres (as patch() stores them by rows)
     const double R2 = kernel_.compact() ? kernel_.radius()*kernel_.radius() : -1;
+    const Points cNew(p.newCentres());
     p.start.assign(rows.size() + 1, 0);
     kernel_.visit([&](const auto& phi)
     {
         for (std::size_t r = 0; r < rows.size(); ++r)
         {
-            for (std::size_t e = 0; e < nNew; ++e)
-            {
-                double value;
-                if (entry(phi, R2, &x_(rows[r], 0), &centres(p.centre[e], 0), value))
+            p.start[r + 1] = p.start[r] + newEntries(phi, R2, &x_(rows[r], 0), cNew,
+                [&](const std::size_t e, const double v)
                 {
                     p.entry.push_back(std::uint8_t(e));
-                    p.value.push_back(value);
-                }
-            }
-            p.start[r + 1] = std::uint32_t(p.value.size());
+                    p.value.push_back(v);
+                });
         }
     });
-    const Scatter scatter{targets, components, out};
-    Values unused;
     productOf(slots_[current_], p, true, alpha, beta, unused, &scatter, &rows);
     return true;
 }

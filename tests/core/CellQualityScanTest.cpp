@@ -385,6 +385,48 @@ TEST(CellQualityScan, ASubsetMeasuresItsCellsAsTheWholeScan)
 }
 
 
+TEST(CellQualityScan, ASubsetsPointsAreThoseItsCellsRead)
+{
+    // A subset's pointIds: each once, the whole scan's, and exactly the
+    // points its qualities depend on (the trial window makes the mesh at
+    // those alone): every other point moved, its qualities are the same
+    // bit for bit; each of its points moved alone, one changes. A second
+    // subset of the same scan numbers its points afresh
+    const HexBlock b(6, HexBlock::Split::mixed);
+    const std::vector<double> p(deformed(b.points, 0.2, 7));
+    const CellQualityScan whole(b.scan(TetQuality::Metric::sizeShape));
+    const std::vector<int> cells{40, 3, 77, 12};
+    const CellQualityScan some(whole, cells);
+    const std::vector<int>& ids = some.pointIds();
+    std::vector<int> sorted(ids);
+    std::sort(sorted.begin(), sorted.end());
+    ASSERT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "a point twice";
+    for (const int i : ids)
+    {
+        ASSERT_NE(std::find(whole.pointIds().begin(), whole.pointIds().end(), i),
+            whole.pointIds().end());
+    }
+    std::vector<double> q0(some.size()), q(some.size());
+    some.measure(p.data(), q0.data());
+    std::vector<double> moved(p);
+    for (std::size_t i = 0; i < moved.size()/3; ++i)
+    {
+        if (!std::binary_search(sorted.begin(), sorted.end(), int(i))) moved[3*i] += 0.3;
+    }
+    some.measure(moved.data(), q.data());
+    EXPECT_EQ(q, q0) << "a quality read a point not among pointIds";
+    for (const int i : ids)
+    {
+        moved = p;
+        moved[3*std::size_t(i) + 1] += 0.05;
+        some.measure(moved.data(), q.data());
+        EXPECT_NE(q, q0) << "point " << i << " is not read";
+    }
+    EXPECT_EQ(CellQualityScan(whole, cells).pointIds(), ids);
+    EXPECT_EQ(CellQualityScan(whole, std::vector<int>{}).pointIds().size(), 0u);
+}
+
+
 TEST(CellQualityScan, RefusesInconsistentRows)
 {
     const double p0[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};

@@ -13,11 +13,6 @@ motionRun() {
     fi
 }
 
-# restartEqualsUninterrupted [NP]: written at t = 0.5 and 1 only (points at
-# full precision), so the uninterrupted run carries updated factorizations
-# between writes; run to t = 1 here; in restart/, run to 0.5, restart from
-# 0.5 to 1; the points at 1 agree to round-off (1e-14 of the domain size).
-# NP = 2: both runs on 2 processors (simple decomposition), reconstructed
 # writeSimpleDecomposition: system/decomposeParDict, 2 processors split in x
 writeSimpleDecomposition() {
     writeFile system/decomposeParDict dictionary <<'EOT'
@@ -27,6 +22,11 @@ coeffs { n (2 1 1); }
 EOT
 }
 
+# restartEqualsUninterrupted [NP]: written at t = 0.5 and 1 only (points at
+# full precision), so the uninterrupted run carries updated factorizations
+# between writes; run to t = 1 here; in restart/, run to 0.5, restart from
+# 0.5 to 1; the points at 1 agree to round-off (1e-14 of the domain size).
+# NP = 2: both runs on 2 processors (simple decomposition), reconstructed
 restartEqualsUninterrupted() {
     local np="${1:-1}"
     foamDictionary system/controlDict -entry writePrecision -set 17 > /dev/null

@@ -76,6 +76,7 @@ std::vector<badInput> catalogue()
         {"TrialPointsListsAllowed", mv + st + r + "controlPoints { selection dynamic; trialPoints some; }", "window"},
         {"TrialPointsWithNearest", mv + st + r + "controlPoints { selection dynamic; swapRule nearest; trialPoints all; }", "trialPoints"},
         {"TrialPointsWithGreedy", mv + st + r + "controlPoints { selection greedy; trialPoints window; }", "trialPoints"},
+        {"TrialPointsWithAll", mv + st + r + "controlPoints { selection all; trialPoints all; }", "Allowed selections using it: dynamic"},
         {"RotationWithoutRotationInterpolation", mv + st + r + "rotation { centre (0.5 0 0); }", "rotationInterpolation"},
         {"RotationInterpolationNotBool", mv + st + r + "rotationInterpolation maybe;", "rotationInterpolation"},
         {"RotationNotDict", mv + st + r + "rotationInterpolation true; rotation yes;", "rotation"},
