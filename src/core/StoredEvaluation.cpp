@@ -175,13 +175,23 @@ bool StoredEvaluation::prepare(const Points& centres, std::size_t budgetBytes)
             return true;
         }
     }
-    // into the slot that is not current; the other one counts in the budget
+    // into the slot that is not current (none current: one that is not
+    // used, if any), merged from the other one or built; the other one
+    // counts in the budget
     patch_ = Patch();
-    const int k = current_ == 0 ? 1 : 0;
+    const int k =
+        current_ >= 0 ? 1 - current_ : slots_[0].used && !slots_[1].used ? 1 : 0;
     const std::size_t other = slots_[1 - k].bytes();
     current_ = -1;
     ++attempts_;
-    if (other > budgetBytes || !build(centres, budgetBytes - other, slots_[k]))
+    const Merge m =
+        other > budgetBytes ? Merge::tooBig
+      : merge(1 - k, centres, budgetBytes - other, slots_[k]);
+    if
+    (
+        m == Merge::tooBig
+     || (m == Merge::notWorth && !build(centres, budgetBytes - other, slots_[k]))
+    )
     {
         slots_[k] = Slot();
         refused_ = centres;
@@ -190,6 +200,7 @@ bool StoredEvaluation::prepare(const Points& centres, std::size_t budgetBytes)
     }
     refused_.resize(0, 3);
     ++builds_;
+    merges_ += m == Merge::merged;
     current_ = k;
     return true;
 }

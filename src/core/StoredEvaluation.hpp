@@ -12,8 +12,12 @@
 // rebuild). A set that differs from a stored one in a few centres (a swap,
 // a point added) is not rebuilt either: the stored matrix serves the
 // centres they share (weight zero for those the set no longer has) and the
-// few new centres' columns are computed alone, O(points) each (a patch). A set whose matrix would exceed the memory budget is not stored
-// (prepare() returns false): the caller evaluates on the fly instead.
+// few new centres' columns are computed alone, O(points) each (a patch).
+// A set further from the current one, but sharing most of its centres (a
+// patch outgrown: swaps accumulated), has its matrix merged from it (the
+// shared columns' entries copied, the new centres' computed) rather than
+// built anew. A set whose matrix would exceed the memory budget is not
+// stored (prepare() returns false): the caller evaluates on the fly instead.
 #pragma once
 #include "LinearPolynomial.hpp"
 #include "RadialKernel.hpp"
@@ -38,8 +42,9 @@ public:
 
     //- Make the matrix of these centres current: reuse a stored one with the
     //  same centres (same order); else patch a stored one that differs in
-    //  at most maxPatchColumns centres either way; else build it, O(nnz),
-    //  into the older slot. False (nothing stored) if it would take more
+    //  at most maxPatchColumns centres either way; else make it into the
+    //  older slot: merged from the current one if it has at least half of
+    //  the centres, else built, O(nnz). False (nothing stored) if it would take more
     //  than budget bytes together with the other slot's.
     bool prepare(const Points& centres, std::size_t budgetBytes);
 
@@ -117,8 +122,11 @@ public:
     //- Bytes held
     std::size_t bytes() const;
 
-    //- Number of matrix builds so far
+    //- Number of matrices made so far (built or merged)
     int builds() const { return builds_; }
+
+    //- Of those, the number merged from a stored one
+    int merges() const { return merges_; }
 
     //- Number of builds tried (refused ones too; a set refused with no
     //  more budget is not tried again)
@@ -189,6 +197,16 @@ private:
     //- Build the matrix of these centres into s; false (s emptied) if it
     //  would take more than budget bytes
     bool build(const Points& centres, std::size_t budget, Slot& s) const;
+
+    //- What merge() did
+    enum class Merge { merged, notWorth, tooBig };
+
+    //- Merge the matrix of these centres into s from slot k (a sparse
+    //  one): its entries in the centres s shares with it copied (in its
+    //  order), those of the others computed after them; notWorth (s
+    //  untouched) if fewer than half of the centres are shared, tooBig if
+    //  it would take more than budget bytes (so would a build)
+    Merge merge(int k, const Points& centres, std::size_t budget, Slot& s) const;
 
     //- Patch slot k for these centres; false if they differ too much or
     //  it would take more than budget bytes
@@ -275,6 +293,7 @@ private:
     int current_ = -1;
     Patch patch_;
     int builds_ = 0;
+    int merges_ = 0;
     int attempts_ = 0;
     Points refused_;                // the last set refused, and its budget
     std::size_t refusedBudget_ = 0;

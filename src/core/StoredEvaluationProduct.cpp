@@ -212,13 +212,14 @@ Values StoredEvaluation::slotWeights
 ) const
 {
     // the shared centres through the stored matrix (zero for the slot's
-    // centres the set no longer has), the others alone
+    // centres the set no longer has; a centre given twice: both weights on
+    // its column), the others alone
     Values a = Values::Zero(s.centres.rows(), 3);
     for (std::size_t j = 0; j < patch.column.size(); ++j)
     {
         if (patch.column[j] >= 0)
         {
-            a.row(patch.column[j]) = alpha.row(j);
+            a.row(patch.column[j]) += alpha.row(j);
         }
     }
     return a;

@@ -539,12 +539,93 @@ TEST_P(StoredCase, PatchedSetsEqualTheEvaluator)
     Points twice(base.rows() + 2, 3);
     twice << base, extra.row(7), extra.row(7);
     check(twice, 2, 1, "added twice");
+    Points stored(base.rows() + 1, 3);     // a stored centre given twice:
+    stored << base, base.row(5);           // both weights on its column
+    check(stored, 0, 1, "stored one twice");
 
-    Points many = base;                    // too many: a build
-    many.topRows(StoredEvaluation::maxPatchColumns + 1) =
-        extra.topRows(StoredEvaluation::maxPatchColumns + 1);
+    Points many = base;                    // too many: a matrix made (from
+    many.topRows(StoredEvaluation::maxPatchColumns + 1) =    // the stored
+        extra.topRows(StoredEvaluation::maxPatchColumns + 1); // one, compact)
     check(many, 0, 2, "many swaps");
+    EXPECT_EQ(s.merges(), k.compact() ? 1 : 0);
     check(base, 0, 2, "back");
+}
+
+//- The stored product of s and of a matrix built anew for the centres c
+//  (prepared in both), largest difference relative to the values' size
+double storedVsBuilt
+(
+    const StoredEvaluation& s,
+    const RadialKernel& k,
+    const LinearPolynomial& frame,
+    const Points& x,
+    const Points& c
+)
+{
+    StoredEvaluation built(k, frame, x);
+    EXPECT_TRUE(built.prepare(c, std::size_t(1) << 30));
+    EXPECT_EQ(built.merges(), 0);
+    const Values alpha = test::smoothField(c);
+    const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+    Values a, b;
+    s.evaluate(alpha, beta, a);
+    built.evaluate(alpha, beta, b);
+    return (a - b).cwiseAbs().maxCoeff()/(1 + b.cwiseAbs().maxCoeff());
+}
+
+// A set too far from the stored one for a patch, but sharing at least half
+// of its centres, is merged from it: the same entries as a matrix built anew
+// (the same bytes, the same product to round-off; the entries' order is
+// the stored one's), whether its new centres are few (by the patches' loop)
+// or many (by a tree), centres given twice, the columns' width growing from
+// 8 to 16 bits; with fewer shared than new centres, built
+TEST(StoredEvaluation, MergedSetsEqualBuiltOnes)
+{
+    const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.35);
+    const LinearPolynomial frame(true, 3);
+    const Points x = randomPoints(2000, 3, 61);
+    const Points base = randomPoints(250, 3, 62);
+    const Points extra = randomPoints(150, 3, 63);
+    const std::size_t budget = std::size_t(1) << 30;
+    StoredEvaluation s(k, frame, x);
+    ASSERT_TRUE(s.prepare(base, budget));
+    int merges = 0;
+    const auto check = [&](const Points& c, bool merged, const char* what)
+    {
+        ASSERT_TRUE(s.prepare(c, budget)) << what;
+        merges += merged;
+        EXPECT_EQ(s.merges(), merges) << what;
+        EXPECT_EQ(s.patchColumns(), 0) << what;
+        EXPECT_LT(storedVsBuilt(s, k, frame, x, c), 1e-13) << what;
+        EXPECT_LT(storedVsEvaluator(s, k, frame, x, c, 3), 1e-12) << what;
+    };
+
+    Points swaps = base;                   // ten swaps, reordered
+    swaps.topRows(10) = extra.topRows(10);
+    swaps.row(20).swap(swaps.row(200));
+    check(swaps, true, "ten swaps");
+
+    Points grown(swaps.rows() + 40, 3);    // 40 added (a tree), 16-bit
+    grown << swaps, extra.middleRows(10, 40);
+    check(grown, true, "forty added");
+
+    Points twice(grown.rows(), 3);         // ten shared centres given twice,
+    twice << grown.topRows(grown.rows() - 20), // ten new, twenty gone
+        grown.middleRows(100, 10), extra.middleRows(60, 10);
+    check(twice, true, "given twice");
+
+    Points far = twice;                    // most centres new: built
+    far.topRows(far.rows()/2 + 10) = randomPoints(far.rows()/2 + 10, 3, 64);
+    check(far, false, "most new");
+
+    // a merge over the budget is refused as a build would be: nothing kept
+    StoredEvaluation tight(k, frame, x);
+    ASSERT_TRUE(tight.prepare(base, budget));
+    const std::size_t one = tight.bytes();
+    EXPECT_FALSE(tight.prepare(swaps, one + one/2));
+    EXPECT_EQ(tight.merges(), 0);
+    EXPECT_TRUE(tight.prepare(swaps, 2*one + one/2));
+    EXPECT_EQ(tight.merges(), 1);
 }
 
 } // namespace
