@@ -42,10 +42,19 @@ bool Foam::dcpRBFControlPoints::proposeSwap
         return false;
     }
 
-    // Leaving: the moving control point whose removal costs least
-    const dcprbf::DynamicControlSet::State before(set_.state());
+    // Leaving: the moving control point whose removal costs least (the
+    // errors first: the state a trial undone returns to keeps what they
+    // took, for the next trial on the same set)
+    const std::vector<Eigen::Index> order
+    (
+        set_.removalOrder(set_.leaveOneOutErrors(d))
+    );
+    std::unique_ptr<dcprbf::DynamicControlSet::State> before
+    (
+        new dcprbf::DynamicControlSet::State(set_.state())
+    );
     label skipped = 0;
-    for (const Eigen::Index out : set_.removalOrder(set_.leaveOneOutErrors(d)))
+    for (const Eigen::Index out : order)
     {
         if (skipped++ < skip)
         {
@@ -67,10 +76,10 @@ bool Foam::dcpRBFControlPoints::proposeSwap
             }
             if (!stepFrom_)
             {
-                stepFrom_.reset(new dcprbf::DynamicControlSet::State(before));
+                stepFrom_.reset(new dcprbf::DynamicControlSet::State(*before));
                 nKept_ = 0;
             }
-            trialFrom_.reset(new dcprbf::DynamicControlSet::State(before));
+            trialFrom_ = std::move(before);
             return true;
         }
     }

@@ -43,7 +43,7 @@ public:
     void factorize(const Points& centres);
 
     //- Empty set (keeps the shift and the storage)
-    void clear() { n_ = 0; L_.clear(); }
+    void clear() { n_ = 0; L_.clear(); inverseDiagonal_.resize(0); }
 
     //- Raise the shift tenfold, then factorize (TPS whose pivot failed)
     void raiseShiftAndFactorize(const Points& centres);
@@ -67,8 +67,9 @@ public:
     //  B = Phi_c^{-1} - Phi_c^{-1} P S^{-1} P^T Phi_c^{-1} (the same for
     //  every shift c), from Z = L^{-1}: B_jj = |Z e_j|^2 - |R^{-T} W^T Z e_j|^2
     //  with S = R^T R. Rippa's leave-one-out error at centre j is
-    //  alpha_j / B_jj. O(N^3/3 + N^2 m).
-    Eigen::VectorXd inverseDiagonal() const;
+    //  alpha_j / B_jj. O(N^3/3 + N^2 m), kept until the factorization
+    //  changes (a trial swap undone returns to a state that has it)
+    const Eigen::VectorXd& inverseDiagonal() const;
 
     //- S^{-1} G for an m x 3 matrix G
     Eigen::MatrixX3d schurSolve(const Eigen::MatrixX3d& G) const
@@ -109,6 +110,7 @@ private:
     Eigen::MatrixXd phi_;   // capacity x capacity, plain Phi (TPS only)
     Eigen::LLT<Eigen::MatrixXd> schur_;
     int factorizations_;
+    mutable Eigen::VectorXd inverseDiagonal_;   // empty: not known
 };
 
 } // namespace dcprbf

@@ -13,9 +13,10 @@ namespace dcprbf
 
 std::size_t StoredEvaluation::Slot::bytes() const
 {
-    return outer.size()*sizeof(std::size_t) + inner8.size()
-        + inner.size()*sizeof(std::uint16_t) + inner32.size()*sizeof(int)
-        + values.size()*sizeof(double)
+    // (capacities: a merged matrix may hold a little room to grow)
+    return outer.capacity()*sizeof(std::size_t) + inner8.capacity()
+        + inner.capacity()*sizeof(std::uint16_t) + inner32.capacity()*sizeof(int)
+        + values.capacity()*sizeof(double)
         + dense.size()*sizeof(double);
 }
 

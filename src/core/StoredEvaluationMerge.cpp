@@ -128,15 +128,28 @@ StoredEvaluation::Merge StoredEvaluation::merge
     {
         return Merge::tooBig;
     }
-    const auto size = [nnz](auto& v, bool used)
+    // storage grown with a little room (the next merge's few entries more
+    // do not move it: a vector's growth would double it, copied), counted
+    // in bytes(); unused widths released
+    const std::size_t room =
+        (n + 1)*sizeof(std::size_t) + (nnz + nnz/32)*(indexBytes + sizeof(double)) <= budget
+      ? nnz/32 : 0;
+    const auto size = [nnz, room](auto& v, bool used)
     {
-        v.resize(used ? nnz : 0);
+        const std::size_t m = used ? nnz : 0;
+        if (m > v.capacity() || v.capacity() > m + room)
+        {
+            std::remove_reference_t<decltype(v)> grown;
+            grown.reserve(m + (used ? room : 0));
+            v.swap(grown);
+        }
+        v.resize(m);
         if (!used) v.shrink_to_fit();
     };
     size(s.inner8, indexBytes == 1);
     size(s.inner, indexBytes == 2);
     size(s.inner32, indexBytes == 4);
-    s.values.resize(nnz);
+    size(s.values, true);
     s.dense.resize(0, 0);
 
     fromColumns([&](const auto* in)

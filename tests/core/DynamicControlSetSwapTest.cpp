@@ -72,6 +72,35 @@ TEST_P(LeaveOneOut, EqualsBruteForceRemoval)
     }
 }
 
+// The leave-one-out errors after the set changed (a swap, a state restored,
+// a swap kept) are those of a set made afresh: the inverse diagonal kept
+// between calls is never that of another set; bit for bit on the same one
+TEST(LeaveOneOut, AfterChangesEqualsAFreshSet)
+{
+    const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.6);
+    const Points cand = randomPoints(200, 3, 7);
+    const Values v = fieldFor(cand, 3);
+    DynamicControlSet s = makeSet(cand, k, true, 3);
+    s.reset(everyThird(cand.rows()));
+    const auto fresh = [&]()
+    {
+        DynamicControlSet f = makeSet(cand, k, true, 3);
+        f.reset(s.indices());
+        return f.leaveOneOutErrors(v);
+    };
+    const Values first = s.leaveOneOutErrors(v);
+    EXPECT_TRUE(s.leaveOneOutErrors(v) == first);
+    const DynamicControlSet::State before(s.state());
+    ASSERT_TRUE(s.swap(1, s.indices()[5]));
+    const Values swapped = s.leaveOneOutErrors(v);
+    EXPECT_LT((swapped - fresh()).cwiseAbs().maxCoeff(), 1e-9*v.cwiseAbs().maxCoeff());
+    EXPECT_GT((swapped.topRows(5) - first.topRows(5)).cwiseAbs().maxCoeff(), 0.0);
+    s.restore(before);
+    EXPECT_TRUE(s.leaveOneOutErrors(v) == first);
+    ASSERT_TRUE(s.swap(2, s.indices()[10]));
+    EXPECT_LT((s.leaveOneOutErrors(v) - fresh()).cwiseAbs().maxCoeff(), 1e-9*v.cwiseAbs().maxCoeff());
+}
+
 // The same over 100 centres: the inverse factor's diagonal is computed in
 // blocks of 32 columns (the centres at and around the blocks' edges)
 TEST(LeaveOneOut, OverSeveralBlocksEqualsBruteForceRemoval)
