@@ -14,8 +14,35 @@ Description
 #include "dcpRBFMotionSolver.H"
 #include "dcpRBFTrialWindow.H"
 #include "OStringStream.H"
+#include "syncTools.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::dcpRBFMotionSolver::nGlobalPoints(const labelUList& points)
+{
+    if (!Pstream::parRun())
+    {
+        return points.size();
+    }
+    if (masterPoints_.empty())
+    {
+        masterPoints_ = syncTools::getMasterPoints(mesh());
+    }
+    // a point in any processor's list, counted by its master
+    boolList in(mesh().nPoints(), false);
+    for (const label pointi : points)
+    {
+        in[pointi] = true;
+    }
+    syncTools::syncPointList(mesh(), in, orEqOp<bool>(), false);
+    label n = 0;
+    forAll(in, pointi)
+    {
+        n += in[pointi] && masterPoints_.test(pointi);
+    }
+    return returnReduce(n, sumOp<label>());
+}
+
 
 void Foam::dcpRBFMotionSolver::trySwaps
 (
@@ -190,7 +217,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
     const label kept = controlPoints_.endTrials(d, !rescue);
     if (windowed)
     {
-        r.trialPoints = returnReduce(window.points().size(), sumOp<label>());
+        r.trialPoints = nGlobalPoints(window.points());
     }
     if (!kept && !blend.from)
     {

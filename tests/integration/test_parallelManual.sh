@@ -212,5 +212,13 @@ test_parallelManual_airfoil2D_bendingWing_dcpTrials_equalsSerial() {
     bad=$(grep '^dcpRBF: control points' log.moveDynamicMesh \
         | grep -v -E '^dcpRBF: control points [0-9]+ \(\+[0-9]+ -[0-9]+, guard \+[0-9]+(, [0-9]+ trial swap\(s\) undone)?(, trials at [0-9]+ points)?(, rescue)?\), quality min ' \
         | head -n 1)
-    [ -z "$bad" ] || fail "a log line not as documented: ${bad:0:120}"
+    [ -z "$bad" ] || fail "a log line not as documented: ${bad:0:120}" || return 1
+    # the trials' points counted as in serial (a point on the processors'
+    # boundary once)
+    local serial parallel
+    serial=$(grep -o 'trials at [0-9]* points' log.moveDynamicMesh | tr '\n' ' ')
+    parallel=$(grep -o 'trials at [0-9]* points' par/log.mpirun | tr '\n' ' ')
+    [ -n "$serial" ] || fail "no trials at the window's points in the serial run" || return 1
+    [ "$serial" = "$parallel" ] \
+        || fail "trial points: serial ${serial:0:80}, parallel ${parallel:0:80}"
 }
