@@ -99,6 +99,18 @@ void StoredEvaluation::product
     for (std::ptrdiff_t r = 0; r < n; ++r)
     {
         const std::ptrdiff_t i = row ? row[r] : r;
+        if (row && r + 2 < n && !s.dense.size())
+        {
+            // listed rows: the row after next's entries requested now
+            // (scattered rows defeat the hardware's prefetch)
+            const std::size_t k = s.outer[row[r + 2]], e = s.outer[row[r + 2] + 1];
+            const char* vp = reinterpret_cast<const char*>(s.values.data() + k);
+            const char* ve = reinterpret_cast<const char*>(s.values.data() + e);
+            for (; vp < ve; vp += 64) __builtin_prefetch(vp);
+            if (!s.inner.empty()) __builtin_prefetch(s.inner.data() + k);
+            else if (!s.inner8.empty()) __builtin_prefetch(s.inner8.data() + k);
+            else if (!s.inner32.empty()) __builtin_prefetch(s.inner32.data() + k);
+        }
         double v[3] = {0, 0, 0};
         if (s.dense.size())
         {
