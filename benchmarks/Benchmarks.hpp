@@ -34,6 +34,10 @@ void benchmarkUpdates(const Setup& s);
 //- Greedy selection: incremental against naive re-solving
 void benchmarkGreedy(const Setup& s);
 
+//- The stored matrix of a control set: made (built, merged, patched)
+//  against a product; a product at listed rows against every row
+void benchmarkStored(const Setup& s);
+
 //- Every Nb/n-th surface point: n well-spread control points
 Points subsample(const Points& x, Eigen::Index n, std::vector<Eigen::Index>* indices = nullptr);
 

@@ -1,9 +1,9 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // coreBenchmark: timings of the numerical core on a wing-like surface.
 //
-//     coreBenchmark [--quick] [eval] [update] [greedy]
+//     coreBenchmark [--quick] [eval] [update] [greedy] [stored]
 //
-// No section named: all three, in the order eval, update, greedy (eval first
+// No section named: all four, in the order eval, update, greedy, stored (eval first
 // so that the peak memory it reports is its own). --quick: small sizes, a
 // smoke test of the benchmark itself.
 #include "Benchmarks.hpp"
@@ -30,7 +30,7 @@ int main(int argc, char** argv)
         if (std::strcmp(argv[i], "--quick") == 0) quick = true;
         else sections.insert(argv[i]);
     }
-    if (sections.empty()) sections = {"eval", "update", "greedy"};
+    if (sections.empty()) sections = {"eval", "update", "greedy", "stored"};
 
     Setup s;
     s.surface = quick ? s.wing.surface(30, 67) : s.wing.surface(100, 201);
@@ -65,6 +65,7 @@ int main(int argc, char** argv)
     if (sections.count("eval")) benchmarkEvaluation(s);
     if (sections.count("update")) benchmarkUpdates(s);
     if (sections.count("greedy")) benchmarkGreedy(s);
+    if (sections.count("stored")) benchmarkStored(s);
     std::printf
     (
         "\nPeak RSS of the whole run: %.0f MB. Load average at the end: %.2f.\n",

@@ -1,7 +1,7 @@
 #!/bin/sh
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # Build and run the core benchmark (Release, 2 OpenMP threads by default).
-#     benchmarks/run.sh [--quick] [eval] [update] [greedy]
+#     benchmarks/run.sh [--quick] [eval] [update] [greedy] [stored]
 # Output: a markdown report on stdout, also written to build/benchmarks/report.md
 set -e
 cd "$(dirname "$0")/.."
