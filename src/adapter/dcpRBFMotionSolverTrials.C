@@ -24,21 +24,27 @@ Foam::label Foam::dcpRBFMotionSolver::nGlobalPoints(const labelUList& points)
     {
         return points.size();
     }
-    if (masterPoints_.empty())
+    if (!masterPointsMade_)
     {
         masterPoints_ = syncTools::getMasterPoints(mesh());
+        masterPointsMade_ = true;
     }
     // a point in any processor's list, counted by its master
-    boolList in(mesh().nPoints(), false);
+    // (labels: OpenFOAM's exchange of bools trips GCC's allocation-size
+    // warning, an error in CI)
+    labelList in(mesh().nPoints(), 0);
     for (const label pointi : points)
     {
-        in[pointi] = true;
+        in[pointi] = 1;
     }
-    syncTools::syncPointList(mesh(), in, orEqOp<bool>(), false);
+    syncTools::syncPointList(mesh(), in, maxEqOp<label>(), label(0));
     label n = 0;
     forAll(in, pointi)
     {
-        n += in[pointi] && masterPoints_.test(pointi);
+        if (in[pointi] && masterPoints_.test(pointi))
+        {
+            ++n;
+        }
     }
     return returnReduce(n, sumOp<label>());
 }

@@ -51,7 +51,7 @@ Values DynamicControlSet::leaveOneOutErrors(const Values& candidateValues) const
     Values alpha;
     Eigen::MatrixX3d beta;
     solver_.solve(v, alpha, beta);
-    const Eigen::VectorXd b = solver_.factorization().inverseDiagonal();
+    const Eigen::VectorXd& b = solver_.factorization().inverseDiagonal();
     return alpha.array().colwise()/b.array();
 }
 

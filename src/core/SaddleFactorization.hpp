@@ -68,7 +68,9 @@ public:
     //  every shift c), from Z = L^{-1}: B_jj = |Z e_j|^2 - |R^{-T} W^T Z e_j|^2
     //  with S = R^T R. Rippa's leave-one-out error at centre j is
     //  alpha_j / B_jj. O(N^3/3 + N^2 m), kept until the factorization
-    //  changes (a trial swap undone returns to a state that has it)
+    //  changes (a trial swap undone returns to a state that has it): the
+    //  reference is valid until then; not to be called on one object from
+    //  two threads at once (it stores what it computed)
     const Eigen::VectorXd& inverseDiagonal() const;
 
     //- S^{-1} G for an m x 3 matrix G

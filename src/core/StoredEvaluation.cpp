@@ -178,21 +178,28 @@ bool StoredEvaluation::prepare(const Points& centres, std::size_t budgetBytes)
     }
     // into the slot that is not current (none current: one that is not
     // used, if any), merged from the other one or built; the other one
-    // counts in the budget
+    // counts in the budget. None current (a set refused before): the other
+    // one, a set of the past, is dropped rather than this set refused
     patch_ = Patch();
+    const bool noneCurrent = current_ < 0;
     const int k =
-        current_ >= 0 ? 1 - current_ : slots_[0].used && !slots_[1].used ? 1 : 0;
+        !noneCurrent ? 1 - current_ : slots_[0].used && !slots_[1].used ? 1 : 0;
     const std::size_t other = slots_[1 - k].bytes();
     current_ = -1;
     ++attempts_;
-    const Merge m =
+    Merge m =
         other > budgetBytes ? Merge::tooBig
       : merge(1 - k, centres, budgetBytes - other, slots_[k]);
-    if
-    (
-        m == Merge::tooBig
-     || (m == Merge::notWorth && !build(centres, budgetBytes - other, slots_[k]))
-    )
+    bool made =
+        m == Merge::merged
+     || (m == Merge::notWorth && build(centres, budgetBytes - other, slots_[k]));
+    if (!made && noneCurrent && other > 0)
+    {
+        slots_[1 - k] = Slot();
+        m = Merge::notWorth;
+        made = build(centres, budgetBytes, slots_[k]);
+    }
+    if (!made)
     {
         slots_[k] = Slot();
         refused_ = centres;
@@ -234,15 +241,22 @@ std::size_t StoredEvaluation::Patch::bytes() const
 }
 
 
+std::map<std::array<double, 3>, int> StoredEvaluation::rowsOf(const Points& c)
+{
+    std::map<std::array<double, 3>, int> row;
+    for (Eigen::Index j = 0; j < c.rows(); ++j)
+    {
+        row.emplace(std::array<double, 3>{c(j, 0), c(j, 1), c(j, 2)}, int(j));
+    }
+    return row;
+}
+
+
 bool StoredEvaluation::planPatch(int k, const Points& c, Patch& p) const
 {
     static_assert(maxPatchColumns <= 256, "a patch entry's column in 8 bits");
     const Slot& s = slots_[k];
-    std::map<std::array<double, 3>, int> columnOf;
-    for (Eigen::Index j = 0; j < s.centres.rows(); ++j)
-    {
-        columnOf[{s.centres(j, 0), s.centres(j, 1), s.centres(j, 2)}] = int(j);
-    }
+    const std::map<std::array<double, 3>, int> columnOf(rowsOf(s.centres));
     p.centres = c;
     p.base = k;
     p.column.assign(c.rows(), -1);

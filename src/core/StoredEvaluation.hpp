@@ -13,8 +13,9 @@
 // a point added) is not rebuilt either: the stored matrix serves the
 // centres they share (weight zero for those the set no longer has) and the
 // few new centres' columns are computed alone, O(points) each (a patch).
-// A set further from the current one, but sharing most of its centres (a
-// patch outgrown: swaps accumulated), has its matrix merged from it (the
+// A set further from the current one, but with at least half of its
+// centres in it (a patch outgrown: swaps accumulated), has its matrix
+// merged from it (the
 // shared columns' entries copied, the new centres' computed) rather than
 // built anew. A set whose matrix would exceed the memory budget is not
 // stored (prepare() returns false): the caller evaluates on the fly instead.
@@ -24,6 +25,7 @@
 #include <Eigen/SparseCore>
 #include <array>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 namespace dcprbf
@@ -43,9 +45,10 @@ public:
     //- Make the matrix of these centres current: reuse a stored one with the
     //  same centres (same order); else patch a stored one that differs in
     //  at most maxPatchColumns centres either way; else make it into the
-    //  older slot: merged from the current one if it has at least half of
-    //  the centres, else built, O(nnz). False (nothing stored) if it would take more
-    //  than budget bytes together with the other slot's.
+    //  other slot: merged from the stored one if that has at least half of
+    //  the centres, else built, O(nnz). False (nothing stored) if it would
+    //  take more than budget bytes together with the stored one's (with
+    //  none current, after a refusal: alone, the stored one dropped).
     bool prepare(const Points& centres, std::size_t budgetBytes);
 
     //- At most this many new (and this many unused) centres in a patch
@@ -197,6 +200,10 @@ private:
     //- Build the matrix of these centres into s; false (s emptied) if it
     //  would take more than budget bytes
     bool build(const Points& centres, std::size_t budget, Slot& s) const;
+
+    //- Each centre's row in c, by its coordinates (a centre given twice:
+    //  its first row)
+    static std::map<std::array<double, 3>, int> rowsOf(const Points& c);
 
     //- What merge() did
     enum class Merge { merged, notWorth, tooBig };

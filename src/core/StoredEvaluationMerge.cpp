@@ -53,11 +53,7 @@ StoredEvaluation::Merge StoredEvaluation::merge
     // The new set's column of each of the slot's centres (-1: gone; a
     // centre given twice is copied into its first column, computed anew
     // for the others) and the centres it has not
-    std::map<std::array<double, 3>, int> columnOf;
-    for (Eigen::Index j = from.centres.rows() - 1; j >= 0; --j)
-    {
-        columnOf[{from.centres(j, 0), from.centres(j, 1), from.centres(j, 2)}] = int(j);
-    }
+    const std::map<std::array<double, 3>, int> columnOf(rowsOf(from.centres));
     std::vector<int> newColumn(from.centres.rows(), -1);
     std::vector<int> fresh;
     for (Eigen::Index j = 0; j < c.rows(); ++j)
@@ -94,7 +90,7 @@ StoredEvaluation::Merge StoredEvaluation::merge
     };
 
     // a pass to count, a pass to fill (as build()), into s's storage (its
-    // matrix is replaced: no fresh pages)
+    // matrix is replaced: no fresh pages while it has room, see size below)
     std::vector<std::size_t>& count = s.outer;
     count.assign(n + 1, 0);
     fromColumns([&](const auto* in)

@@ -3,6 +3,7 @@
 // patched, and written straight to their targets).
 #include "StoredEvaluation.hpp"
 
+#include <cstdint>
 #include <string>
 
 namespace dcprbf
@@ -99,18 +100,32 @@ void StoredEvaluation::product
     for (std::ptrdiff_t r = 0; r < n; ++r)
     {
         const std::ptrdiff_t i = row ? row[r] : r;
+        #if defined(__GNUC__)
         if (row && r + 2 < n && !s.dense.size())
         {
             // listed rows: the row after next's entries requested now
-            // (scattered rows defeat the hardware's prefetch)
+            // (scattered rows defeat the hardware's prefetch), each cache
+            // line of its values and columns
             const std::size_t k = s.outer[row[r + 2]], e = s.outer[row[r + 2] + 1];
-            const char* vp = reinterpret_cast<const char*>(s.values.data() + k);
-            const char* ve = reinterpret_cast<const char*>(s.values.data() + e);
-            for (; vp < ve; vp += 64) __builtin_prefetch(vp);
-            if (!s.inner.empty()) __builtin_prefetch(s.inner.data() + k);
-            else if (!s.inner8.empty()) __builtin_prefetch(s.inner8.data() + k);
-            else if (!s.inner32.empty()) __builtin_prefetch(s.inner32.data() + k);
+            const auto ahead = [](const void* from, const void* to)
+            {
+                const std::uintptr_t line = 64;
+                for
+                (
+                    std::uintptr_t at = reinterpret_cast<std::uintptr_t>(from) & ~(line - 1);
+                    at < reinterpret_cast<std::uintptr_t>(to);
+                    at += line
+                )
+                {
+                    __builtin_prefetch(reinterpret_cast<const void*>(at));
+                }
+            };
+            ahead(s.values.data() + k, s.values.data() + e);
+            if (!s.inner.empty()) ahead(s.inner.data() + k, s.inner.data() + e);
+            else if (!s.inner8.empty()) ahead(s.inner8.data() + k, s.inner8.data() + e);
+            else if (!s.inner32.empty()) ahead(s.inner32.data() + k, s.inner32.data() + e);
         }
+        #endif
         double v[3] = {0, 0, 0};
         if (s.dense.size())
         {

@@ -575,7 +575,7 @@ double storedVsBuilt
 
 // A set too far from the stored one for a patch, but sharing at least half
 // of its centres, is merged from it: the same entries as a matrix built anew
-// (the same bytes, the same product to round-off; the entries' order is
+// (the same product to round-off; the entries' order is
 // the stored one's), whether its new centres are few (by the patches' loop)
 // or many (by a tree), centres given twice, the columns' width growing from
 // 8 to 16 bits; with fewer shared than new centres, built
@@ -626,6 +626,15 @@ TEST(StoredEvaluation, MergedSetsEqualBuiltOnes)
     EXPECT_EQ(tight.merges(), 0);
     EXPECT_TRUE(tight.prepare(swaps, 2*one + one/2));
     EXPECT_EQ(tight.merges(), 1);
+
+    // a budget for one matrix: a set refused (nothing current) leaves the
+    // set before stored, but the next set that fits alone is stored (the
+    // one of the past dropped), not refused for its sake
+    StoredEvaluation one1(k, frame, x);
+    ASSERT_TRUE(one1.prepare(base, one + one/2));
+    EXPECT_FALSE(one1.prepare(swaps, one + one/2));
+    EXPECT_TRUE(one1.prepare(grown, one + one/2));
+    EXPECT_LT(storedVsEvaluator(one1, k, frame, x, grown, 3), 1e-12);
 }
 
 } // namespace
