@@ -34,6 +34,12 @@ double minSeconds(int repeats, F&& f)
     return best;
 }
 
+//- Keep the compiler from dropping the writes to what p points to
+inline void keepWrites(const void* p)
+{
+    asm volatile("" : : "g"(p) : "memory");
+}
+
 //- Peak resident set size of this process so far, MB
 inline double peakRssMB()
 {

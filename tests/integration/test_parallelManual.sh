@@ -186,6 +186,19 @@ test_parallelManual_cube3D_staticLid_equalsSerial() {
     everySelectionParallelEqualsSerial 0.5 "movingPatches (body); staticPatches (outer lid); supportRadius 1.5;"
 }
 
+# bendingWingTrialsCase: bendingWingCase in steps of 0.025 (written every
+# 4th) with a fixed set of 5 points, no boundary correction and no guard:
+# trials at many steps, and at the last, whose mesh folds, the rescue
+bendingWingTrialsCase() {
+    bendingWingCase || return 1
+    foamDictionary system/controlDict -entry deltaT -set 0.025 > /dev/null
+    foamDictionary system/controlDict -entry writeInterval -set 4 > /dev/null
+    dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom);
+        supportRadius 2.5; boundaryCorrection false; guardIterations 0;
+        controlPoints { selection dynamic; tolerance 1e-12; minPoints 5; maxPoints 5;
+            reselectTolerance 1e9; }"
+}
+
 # The error-guided rule's trials in parallel: a fixed set of 5 points without
 # boundary correction on the bent wing, in steps of 0.025, so that the trials
 # (judged on a window of cells spread over both processors: the worst cells
@@ -194,13 +207,7 @@ test_parallelManual_cube3D_staticLid_equalsSerial() {
 # serial, and the serial run made trials at an inverted step (a row of
 # dcpRBF.dat with minQuality <= 0 and nUndone >= 2)
 test_parallelManual_airfoil2D_bendingWing_dcpTrials_equalsSerial() {
-    bendingWingCase || return 1
-    foamDictionary system/controlDict -entry deltaT -set 0.025 > /dev/null
-    foamDictionary system/controlDict -entry writeInterval -set 4 > /dev/null
-    dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom);
-        supportRadius 2.5; boundaryCorrection false; guardIterations 0;
-        controlPoints { selection dynamic; tolerance 1e-12; minPoints 5; maxPoints 5;
-            reselectTolerance 1e9; }"
+    bendingWingTrialsCase || return 1
     parallelEqualsSerial 0.5 "$manualDecompositionDict" || return 1
     awk '!/^#/ && $7 <= 0 && $15 >= 2 { n++ } END { exit !(n > 0) }' \
         postProcessing/dcpRBF/0/dcpRBF.dat \

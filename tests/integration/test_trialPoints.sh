@@ -108,17 +108,10 @@ test_trialPoints_windowEqualsAll_slipDuct3D_onTheFly() {
     windowEqualsAll 1
 }
 
-# the rescue (trials past an undone one, applied at once, from a blend
-# ended early) on the bent wing whose last steps fold (the case of
-# test_parallelManual_airfoil2D_bendingWing_dcpTrials_equalsSerial)
+# the rescue (trials past an undone one, applied at once) on the bent wing
+# whose last step folds
 test_trialPoints_windowEqualsAll_rescue() {
-    bendingWingCase || return 1
-    foamDictionary system/controlDict -entry deltaT -set 0.025 > /dev/null
-    foamDictionary system/controlDict -entry writeInterval -set 4 > /dev/null
-    dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom);
-        supportRadius 2.5; boundaryCorrection false; guardIterations 0;
-        controlPoints { selection dynamic; tolerance 1e-12; minPoints 5; maxPoints 5;
-            reselectTolerance 1e9; }"
+    bendingWingTrialsCase || return 1
     windowEqualsAll 1 rescue || return 1
     grep -q ', rescue), quality min' log.moveDynamicMesh || fail "no rescue step"
 }
