@@ -62,8 +62,8 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
     scanned_ = sorted.others();
 
     // The other cells' faces, each once, numbered in order of appearance
-    // (a trial window's parts in 3D are copied from the region's scan
-    // instead: dcpRBFCellQuality(from, positions))
+    // (a trial window's parts are copied from the region's scans
+    // instead: dcpRBFCellQuality(from, positions, points0))
     const faceList& faces = mesh.faces();
     labelList compact(faces.size(), -1);
     std::vector<std::size_t> cellStart(1, 0), faceStart(1, 0);
@@ -96,26 +96,59 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
 Foam::dcpRBFCellQuality::dcpRBFCellQuality
 (
     const dcpRBFCellQuality& from,
-    const labelUList& positions
+    const labelUList& positions,
+    const pointField& points0
 )
 :
     mesh_(from.mesh_),
     metric_(from.metric_),
-    nCells_(positions.size()),
-    scanned_(identity(positions.size()))
+    nCells_(positions.size())
 {
     if (!from.subsettable())
     {
         FatalErrorInFunction
-            << "A subset of cells measured from 2D polygons" << abort(FatalError);
+            << "A subset of a cell quality constructed without cells"
+            << abort(FatalError);
     }
-    scan_.reset
-    (
-        new dcprbf::CellQualityScan
+    if (from.scanOf_.size() != from.nCells_)
+    {
+        from.scanOf_.setSize(from.nCells_);
+        forAll(from.planar_, k)
+        {
+            from.scanOf_[from.planar_[k]] = k;
+        }
+        forAll(from.scanned_, k)
+        {
+            from.scanOf_[from.scanned_[k]] = -1 - k;
+        }
+    }
+    // each cell from the scan that measured it, at its place in the list
+    std::vector<int> flat, polygons;
+    DynamicList<label> scanned(positions.size()), planar;
+    forAll(positions, i)
+    {
+        const label k = from.scanOf_[positions[i]];
+        if (k >= 0)
+        {
+            polygons.push_back(int(k));
+            planar.append(i);
+        }
+        else
+        {
+            flat.push_back(int(-1 - k));
+            scanned.append(i);
+        }
+    }
+    scan_.reset(new dcprbf::CellQualityScan(*from.scan_, flat));
+    scanned_.transfer(scanned);
+    if (polygons.size())
+    {
+        planarScan_.reset
         (
-            *from.scan_, std::vector<int>(positions.begin(), positions.end())
-        )
-    );
+            new dcprbf::PlanarCellQualityScan(*from.planarScan_, polygons, xyz(points0))
+        );
+        planar_.transfer(planar);
+    }
 }
 
 

@@ -81,8 +81,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
         max(minTrialWindow, label(trialWindowFraction*lastQuality_.nCells));
     dcpRBFTrialWindow window
     (
-        mesh(), region_, lastQuality_.quality, nWindow, points0(),
-        settings_.metric()
+        mesh(), region_, lastQuality_.quality, nWindow, points0()
     );
     dcpRBFQualityRegion::rankedCell worst(lastQuality_.worst[0]);
     // the mesh of the set kept so far: at every point (complete), or, once

@@ -65,19 +65,8 @@ void Foam::dcpRBFTrialWindow::append(labelList&& positions)
         merged.begin()
     );
     positions_.transfer(merged);
-    // the region's classified cells copied (3D), or the cells from the mesh
-    // (2D polygons)
-    const dcpRBFCellQuality& all = region_.cellQuality();
-    scans_.append
-    (
-        all.subsettable()
-      ? new dcpRBFCellQuality(all, positions)
-      : new dcpRBFCellQuality
-        (
-            mesh_, labelList(labelUIndList(region_.cells(), positions)),
-            points0_, metric_
-        )
-    );
+    // the region's classified cells copied (flat scan and 2D polygons)
+    scans_.append(new dcpRBFCellQuality(region_.cellQuality(), positions, points0_));
     // the new cells' points not yet in the window (from the scan's list of
     // the points it reads, else from the mesh's faces)
     const label nBefore = points_.size();
@@ -167,14 +156,12 @@ Foam::dcpRBFTrialWindow::dcpRBFTrialWindow
     const dcpRBFQualityRegion& region,
     const scalarField& q,
     const label n,
-    const pointField& points0,
-    const dcprbf::TetQuality::Metric metric
+    const pointField& points0
 )
 :
     mesh_(mesh),
     region_(region),
     points0_(points0),
-    metric_(metric),
     marked_(mesh.nPoints())
 {
     append(lowest(q, n));

@@ -1,6 +1,7 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 // CellQualityScan, continued: a scan of some of another scan's cells.
 #include "CellQualityScan.hpp"
+#include "ScratchNumbering.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -47,26 +48,15 @@ CellQualityScan::CellQualityScan
 
     // from's points renumbered in the order the cells use them (from's
     // scratch numbering, reset below where set)
-    std::vector<int>& local = from.subsetPoint_;
-    local.resize(from.pointIds_.size(), -1);
-    std::vector<int> fromPoint;
-    struct reset
-    {
-        std::vector<int>& local;
-        const std::vector<int>& set;
-        ~reset() { for (const int p : set) local[std::size_t(p)] = -1; }
-    } resetLocal{local, fromPoint};
+    ScratchNumbering local(from.subsetPoint_, from.pointIds_.size());
     const auto point = [&](const int p)
     {
-        if (local[std::size_t(p)] < 0)
+        return local(p, [&](const int q)
         {
-            local[std::size_t(p)] = int(pointIds_.size());
-            fromPoint.push_back(p);
-            pointIds_.push_back(from.pointIds_[std::size_t(p)]);
-            const double* x0 = &from.points0_[3*std::size_t(p)];
+            pointIds_.push_back(from.pointIds_[std::size_t(q)]);
+            const double* x0 = &from.points0_[3*std::size_t(q)];
             points0_.insert(points0_.end(), x0, x0 + 3);
-        }
-        return local[std::size_t(p)];
+        });
     };
     order_.reserve(cells.size());
     kind_.reserve(cells.size());

@@ -1,5 +1,6 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 #include "PlanarCellQualityScan.hpp"
+#include "ScratchNumbering.hpp"
 #include "PlanarMapBatch.hpp"
 #include "WorstBatch.hpp"
 #include "TetMeasures.hpp"
@@ -35,7 +36,6 @@ PlanarCellQualityScan::PlanarCellQualityScan
     {
         throw std::invalid_argument("PlanarCellQualityScan: axes");
     }
-    int maxIndex = -1;
     for (std::size_t i = 0; i + 1 < polygonStart_.size(); ++i)
     {
         if (polygonStart_[i + 1] < polygonStart_[i] + 3)
@@ -43,12 +43,12 @@ PlanarCellQualityScan::PlanarCellQualityScan
             throw std::invalid_argument("PlanarCellQualityScan: polygon size");
         }
     }
+    int maxIndex = -1;
     for (const int pi : polygonPoints_)
     {
         if (pi < 0) throw std::invalid_argument("PlanarCellQualityScan: point index");
         maxIndex = std::max(maxIndex, pi);
     }
-
     // The points renumbered in order of use (read from a compact copy)
     std::vector<int> local(std::size_t(maxIndex + 1), -1);
     for (int& pi : polygonPoints_)
@@ -60,6 +60,45 @@ PlanarCellQualityScan::PlanarCellQualityScan
         }
         pi = local[pi];
     }
+    setUp(points0);
+}
+
+
+PlanarCellQualityScan::PlanarCellQualityScan
+(
+    const PlanarCellQualityScan& from,
+    const std::vector<int>& cells,
+    const double* points0
+)
+:
+    polygonStart_(1, 0),
+    axis0_(from.axis0_),
+    axis1_(from.axis1_),
+    metric_(from.metric_)
+{
+    // from's points renumbered in order of use (through from's scratch)
+    ScratchNumbering local(from.subsetPoint_, from.pointIds_.size());
+    for (const int c : cells)
+    {
+        if (c < 0 || std::size_t(c) >= from.size())
+        {
+            throw std::invalid_argument("PlanarCellQualityScan: a subset's cell index");
+        }
+        for (std::size_t j = from.polygonStart_[c]; j < from.polygonStart_[c + 1]; ++j)
+        {
+            polygonPoints_.push_back(local(from.polygonPoints_[j], [&](const int p)
+            {
+                pointIds_.push_back(from.pointIds_[std::size_t(p)]);
+            }));
+        }
+        polygonStart_.push_back(polygonPoints_.size());
+    }
+    setUp(points0);
+}
+
+
+void PlanarCellQualityScan::setUp(const double* points0)
+{
     // Per map the inverse of its reference edges E0 = (ea, eb), once: a
     // measurement needs F = E E0^-1 only. A triangle: one map, its own
     // (ea, eb = b - a, c - a; each triangle of the decomposition (centre,

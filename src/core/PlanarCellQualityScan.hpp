@@ -54,6 +54,16 @@ public:
         TetQuality::Metric metric = TetQuality::Metric::sizeShape
     );
 
+    //- Some of from's cells (indices into its cells, in this order), for
+    //  the reference points points0 from's were made with: the same values
+    //  as a scan built from their polygons (none classified again)
+    PlanarCellQualityScan
+    (
+        const PlanarCellQualityScan& from,
+        const std::vector<int>& cells,
+        const double* points0
+    );
+
     //- Number of cells
     std::size_t size() const { return polygonStart_.size() - 1; }
 
@@ -94,6 +104,13 @@ private:
     std::vector<std::size_t> mapStart_;
     std::vector<double> inverse0_;
     std::vector<char> degenerate_;
+
+    //- The reference maps made (polygonPoints_ into pointIds_)
+    void setUp(const double* points0);
+
+    //- A subset's numbering of these points (pointIds_), -1 between
+    //  subsets (only the entries a subset set are reset)
+    mutable std::vector<int> subsetPoint_;
 
     //- Cell otherCells_[k]'s maps for the compact current in-plane points
     //  x into batch from position t

@@ -185,6 +185,39 @@ TEST(PlanarCellQualityScan, RigidMotionIsOneAndThreadsAreBitIdentical)
 }
 
 
+// A subset of a scan's cells (in any order), built from its polygons
+// without classifying the cells again, measures each of them as the whole
+// scan does, bit for bit; a second subset from the same scan too (its
+// scratch numbering reset); a cell index out of range refused
+TEST(PlanarCellQualityScan, SubsetsEqualTheWholeScan)
+{
+    const Extrusion e(12, 0, 1, 0.1);
+    const PlanarCellQualityScan scan(e.polygonStart, e.polygonPoints, e.points.data(), 0, 1);
+    const std::vector<double> d(e.moved(0.3, 9));
+    std::vector<double> all(scan.size());
+    scan.measure(d.data(), all.data());
+    for (const int stride : {5, 3})
+    {
+        std::vector<int> cells;
+        for (int c = int(scan.size()) - 1; c >= 0; c -= stride) cells.push_back(c);
+        std::swap(cells[0], cells[cells.size()/2]);
+        const PlanarCellQualityScan sub(scan, cells, e.points.data());
+        ASSERT_EQ(sub.size(), cells.size());
+        std::vector<double> q(sub.size());
+        sub.measure(d.data(), q.data());
+        for (std::size_t k = 0; k < cells.size(); ++k)
+        {
+            EXPECT_EQ(q[k], all[std::size_t(cells[k])]) << "cell " << cells[k];
+        }
+    }
+    EXPECT_THROW
+    (
+        PlanarCellQualityScan(scan, {int(scan.size())}, e.points.data()),
+        std::invalid_argument
+    );
+}
+
+
 TEST(PlanarCellQualityScan, SimdBuildsBitIdentical)
 {
     // the AVX-512, the AVX2 and the default build of the SIMD kernels:

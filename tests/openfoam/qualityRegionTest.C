@@ -40,17 +40,17 @@ void compareScans(const label dim, const scalar radius)
     {
         const dcpRBFQualityRegion region(mesh, projection, p0, moving, radius, metric);
         ASSERT_GT(region.cells().size(), 0);
-        // 2D cells are measured from their polygons: no subsets of the scan
-        // (asked for one: an error, not a wrong scan)
-        EXPECT_EQ(region.cellQuality().subsettable(), dim == 3);
-        if (dim == 2)
-        {
-            EXPECT_THROW
-            (
-                dcpRBFCellQuality(region.cellQuality(), labelList({0, 1})),
-                Foam::error
-            );
-        }
+        // subsets (a trial window's parts) copied from the region's scans:
+        // the flat one (3D), the polygons' (2D); the cells' points listed
+        // only for the flat scan (a polygon reads one cap's)
+        ASSERT_TRUE(region.cellQuality().subsettable());
+        EXPECT_EQ(region.cellQuality().pointIds() != nullptr, dim == 3);
+        // (constructed without cells: no subsets, an error)
+        EXPECT_THROW
+        (
+            dcpRBFCellQuality(dcpRBFCellQuality(mesh, metric), labelList({0}), p0),
+            Foam::error
+        );
         if (radius < 1)
         {
             ASSERT_LT(region.cells().size(), mesh.nCells());
@@ -98,6 +98,24 @@ void compareScans(const label dim, const scalar radius)
         }
         EXPECT_GT(nInverted, 0);
         EXPECT_NEAR(min(q), min(ref), 1e-10);
+
+        // every 7th cell, the list reversed, and every 3rd after it (the
+        // scans' scratch numbering reset between subsets): bit for bit
+        for (const label stride : {7, 3})
+        {
+            labelList positions;
+            for (label i = region.cells().size() - 1; i >= 0; i -= stride)
+            {
+                positions.append(i);
+            }
+            const dcpRBFCellQuality sub(region.cellQuality(), positions, p0);
+            const scalarField qs(sub.compute(p));
+            ASSERT_EQ(qs.size(), positions.size());
+            forAll(qs, k)
+            {
+                EXPECT_EQ(qs[k], q[positions[k]]) << dim << "D, position " << positions[k];
+            }
+        }
 
         const dcpRBFQualityRegion::summary s(region.measure(p, 2));
         EXPECT_EQ(s.nCells, region.cells().size());
@@ -282,7 +300,7 @@ TEST(QualityRegion, WithinAndAFewCellsOnTheirOwn)
         }
         // and copied from the region's scan (a trial window's part in 3D)
         ASSERT_TRUE(region.cellQuality().subsettable());
-        const dcpRBFCellQuality copied(region.cellQuality(), positions);
+        const dcpRBFCellQuality copied(region.cellQuality(), positions, p0);
         EXPECT_EQ(copied.compute(p), q);
     }
 }
