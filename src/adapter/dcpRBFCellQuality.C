@@ -104,11 +104,12 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
     metric_(from.metric_),
     nCells_(positions.size())
 {
-    if (!from.subsettable())
+    if (!from.subsettable() || points0.size() != mesh_.nPoints())
     {
         FatalErrorInFunction
-            << "A subset of a cell quality constructed without cells"
-            << abort(FatalError);
+            << "A subset of a cell quality constructed without cells, or"
+            << " reference points not the mesh's (" << points0.size() << " for "
+            << mesh_.nPoints() << " points)" << abort(FatalError);
     }
     if (from.scanOf_.size() != from.nCells_)
     {
@@ -124,9 +125,16 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
     }
     // each cell from the scan that measured it, at its place in the list
     std::vector<int> flat, polygons;
+    flat.reserve(positions.size());
     DynamicList<label> scanned(positions.size()), planar;
     forAll(positions, i)
     {
+        if (positions[i] < 0 || positions[i] >= from.nCells_)
+        {
+            FatalErrorInFunction
+                << "Position " << positions[i] << " of a subset of "
+                << from.nCells_ << " cells" << abort(FatalError);
+        }
         const label k = from.scanOf_[positions[i]];
         if (k >= 0)
         {

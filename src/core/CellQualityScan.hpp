@@ -63,7 +63,8 @@ public:
     //  once): cell k of the new scan is from's cell cells[k]. Copied from
     //  from's classified cells and reference data, not built from the
     //  topology again (a trial window's cells of a 10M-cell region: 0.4 s
-    //  from the mesh). Their qualities are from's, bit for bit
+    //  from the mesh). Their qualities are from's, bit for bit. Not
+    //  concurrently with another subset of from (they share its scratch)
     CellQualityScan(const CellQualityScan& from, const std::vector<int>& cells);
 
     //- Number of cells

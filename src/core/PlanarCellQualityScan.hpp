@@ -56,7 +56,8 @@ public:
 
     //- Some of from's cells (indices into its cells, in this order), for
     //  the reference points points0 from's were made with: the same values
-    //  as a scan built from their polygons (none classified again)
+    //  as a scan built from their polygons (none classified again). Not
+    //  concurrently with another subset of from (they share its scratch)
     PlanarCellQualityScan
     (
         const PlanarCellQualityScan& from,

@@ -37,8 +37,9 @@ public:
         int& k = scratch_[std::size_t(i)];
         if (k < 0)
         {
-            k = int(numbered_.size());
+            // (listed first: reset even if what follows throws)
             numbered_.push_back(i);
+            k = int(numbered_.size()) - 1;
             onNew(i);
         }
         return k;

@@ -210,11 +210,18 @@ TEST(PlanarCellQualityScan, SubsetsEqualTheWholeScan)
             EXPECT_EQ(q[k], all[std::size_t(cells[k])]) << "cell " << cells[k];
         }
     }
+    // refused part-way (its first cells numbered), then a valid subset:
+    // the scratch reset
     EXPECT_THROW
     (
-        PlanarCellQualityScan(scan, {int(scan.size())}, e.points.data()),
+        PlanarCellQualityScan(scan, {0, 1, int(scan.size())}, e.points.data()),
         std::invalid_argument
     );
+    const PlanarCellQualityScan after(scan, {1, 0}, e.points.data());
+    std::vector<double> q(2);
+    after.measure(d.data(), q.data());
+    EXPECT_EQ(q[0], all[1]);
+    EXPECT_EQ(q[1], all[0]);
 }
 
 
@@ -284,6 +291,15 @@ TEST(PlanarCellQualityScan, PolygonsOfEveryKindEqualTheirTrianglesQualities)
             const PlanarCellQualityScan scan(start, polygon, p0.data(), 0, 1, metric);
             std::vector<double> q(n);
             scan.measure(p.data(), q.data());
+            // a subset (pentagons: the maps' path) measures as the whole
+            const std::vector<int> some{n - 1, 7, 3, 200, 201};
+            const PlanarCellQualityScan sub(scan, some, p0.data());
+            std::vector<double> qs(some.size());
+            sub.measure(p.data(), qs.data());
+            for (std::size_t k = 0; k < some.size(); ++k)
+            {
+                EXPECT_EQ(qs[k], q[std::size_t(some[k])]) << N << "-gons, cell " << some[k];
+            }
             int nTiny = 0, nInverted = 0, nOne = 0;
             for (int c = 0; c < n; ++c)
             {

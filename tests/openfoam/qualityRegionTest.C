@@ -233,6 +233,27 @@ TEST(QualityRegion, MixedPolygonAndDecomposedCellsEqualCellQuality2D)
         EXPECT_NEAR(q[i], ref[i], 1e-10) << i;
     }
     EXPECT_LT(min(ref), 1 - 1e-3);
+
+    // subsets (a trial window's parts) of both kinds of cells, interleaved,
+    // the list reversed, two in a row: each value as the whole's, bit for
+    // bit; a position out of range refused
+    for (const label stride : {3, 2})
+    {
+        labelList positions;
+        for (label i = cells.size() - 1; i >= 0; i -= stride) positions.append(i);
+        const dcpRBFCellQuality sub(quality, positions, p0);
+        const scalarField qs(sub.compute(p));
+        ASSERT_EQ(qs.size(), positions.size());
+        forAll(qs, k)
+        {
+            EXPECT_EQ(qs[k], q[positions[k]]) << "position " << positions[k];
+        }
+    }
+    EXPECT_THROW
+    (
+        dcpRBFCellQuality(quality, labelList({0, cells.size()}), p0),
+        Foam::error
+    );
 }
 
 
