@@ -254,6 +254,12 @@ TEST(QualityRegion, MixedPolygonAndDecomposedCellsEqualCellQuality2D)
         dcpRBFCellQuality(quality, labelList({0, cells.size()}), p0),
         Foam::error
     );
+    // reference points not the mesh's: refused
+    EXPECT_THROW
+    (
+        dcpRBFCellQuality(quality, labelList({0}), pointField(p0.size() - 1, Zero)),
+        Foam::error
+    );
 }
 
 
