@@ -310,15 +310,30 @@ void Foam::dcpRBFMotionSolver::solve()
         r.nAdded += controlPoints_.reselect(d, r.atMaxPoints);
         r.selectTime = timer.timeIncrement();
 
-        // 3. Interpolate, snap the boundary; the new mesh's quality
+        // 3. Interpolate, snap the boundary; the new mesh's quality (after
+        //    the trials when they can do without it: one measurement)
         r.boundaryError = interpolateDisplacement(d);
         r.interpolateTime = timer.timeIncrement();
-        measureQuality(r);
+        const bool measured = !trialsBeforeMeasure();
+        if (measured)
+        {
+            measureQuality(r);
+        }
         r.guardTime = timer.timeIncrement();
 
-        // 4. swapRule errorGuided: a trial swap, kept if it helps
-        trySwaps(d, r);
-        r.swapTime += timer.timeIncrement();
+        // 4. swapRule errorGuided: trial swaps, kept if they help; a
+        //    rescue if the mesh without swaps has inverted cells
+        const scalar guardBefore = r.guardTime;
+        if
+        (
+            trySwaps(d, r, measured) == 0
+         && !measured
+         && lastQuality_.nInverted > 0
+        )
+        {
+            trySwaps(d, r, true);
+        }
+        r.swapTime += timer.timeIncrement() - (r.guardTime - guardBefore);
 
         // 5. Guard the quality
         guardQuality(d, r);

@@ -30,6 +30,7 @@ void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
     currentPoints(lastPoints_);
     pointsMeasured_ = true;
     measureRegion(lastPoints_);
+    ++nMeasurements_;
     r.nCells = lastQuality_.nCells;
     r.nInverted = lastQuality_.nInverted;
     r.minQuality = lastQuality_.minQuality;

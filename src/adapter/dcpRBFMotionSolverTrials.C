@@ -15,6 +15,7 @@ Description
 #include "dcpRBFTrialWindow.H"
 #include "OStringStream.H"
 #include "syncTools.H"
+#include "clockTime.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -50,17 +51,70 @@ Foam::label Foam::dcpRBFMotionSolver::nGlobalPoints(const labelUList& points)
 }
 
 
-void Foam::dcpRBFMotionSolver::trySwaps
+bool Foam::dcpRBFMotionSolver::trialsBeforeMeasure() const
+{
+    // trials due, not a rescue (the last step's mesh had no inverted cell),
+    // and the last step's measurement to pick the window from
+    return
+        controlPoints_.canTrial(false)
+     && lastQuality_.nCells > 0
+     && lastQuality_.nInverted == 0
+     && !lastQuality_.worst.empty()
+     && lastQuality_.minQuality < 1 - 1e-12;
+}
+
+
+void Foam::dcpRBFMotionSolver::measureWhole(dcpRBFStepLog::record& r)
+{
+    clockTime timer;
+    measureQuality(r);
+    r.guardTime += timer.elapsedTime();
+}
+
+
+bool Foam::dcpRBFMotionSolver::beatsUnswapped
+(
+    const vectorField& noSwapField,
+    const dcpRBFStepLog::record& noSwapRecord,
+    dcpRBFStepLog::record& r
+)
+{
+    // the swapped mesh aside, the mesh without swaps measured in its place
+    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    vectorField swappedField(disp);
+    dcpRBFQualityRegion::summary swapped(std::move(lastQuality_));
+    pointField swappedPoints(std::move(lastPoints_));
+    const dcpRBFStepLog::record swappedRecord(r);
+    disp = noSwapField;
+    r = noSwapRecord;
+    r.nUndone = swappedRecord.nUndone;
+    r.trialPoints = swappedRecord.trialPoints;
+    measureWhole(r);
+    if (swapped.minQuality > lastQuality_.minQuality)
+    {
+        disp.transfer(swappedField);
+        lastQuality_ = std::move(swapped);
+        lastPoints_.transfer(swappedPoints);
+        pointsMeasured_ = true;
+        r = swappedRecord;
+        return true;
+    }
+    return false;
+}
+
+
+Foam::label Foam::dcpRBFMotionSolver::trySwaps
 (
     const dcprbf::Values& d,
-    dcpRBFStepLog::record& r
+    dcpRBFStepLog::record& r,
+    const bool measured
 )
 {
     // Rescue: without swaps the mesh has inverted cells; the trials do not
     // wait after fruitless ones, go on while they help (up to
     // rescueSwapFactor nSwap) and the swaps apply at once (no blend: an
     // inverted mesh has no smooth motion to keep)
-    const bool rescue = lastQuality_.nInverted > 0;
+    const bool rescue = measured && lastQuality_.nInverted > 0;
     if
     (
         !controlPoints_.canTrial(rescue)
@@ -68,7 +122,7 @@ void Foam::dcpRBFMotionSolver::trySwaps
      || lastQuality_.minQuality >= 1 - 1e-12
     )
     {
-        return;
+        return 0;
     }
     const label nTrials =
         (rescue ? rescueSwapFactor : 1)*settings_.selection().nSwap;
@@ -76,17 +130,32 @@ void Foam::dcpRBFMotionSolver::trySwaps
         settings_.selection().trialAt == dcpRBFSelectionSettings::trialPoints::window;
     r.rescue = rescue;
 
-    // Trials judged on the worst cells and those around the leaving points
+    // Trials judged on the worst cells (of this step's mesh without swaps
+    // if measured, else of the last step's mesh) and those around the
+    // leaving points
     const label nWindow =
         max(minTrialWindow, label(trialWindowFraction*lastQuality_.nCells));
     dcpRBFTrialWindow window
     (
         mesh(), region_, lastQuality_.quality, nWindow, points0()
     );
-    dcpRBFQualityRegion::rankedCell worst(lastQuality_.worst[0]);
     // the mesh of the set kept so far: at every point (complete), or, once
     // a trial made at the window's points alone is kept, at those
-    pointField current(lastPoints_);
+    pointField current;
+    if (measured)
+    {
+        current = lastPoints_;
+    }
+    else
+    {
+        currentPoints(current);
+    }
+    dcpRBFQualityRegion::rankedCell worst
+    (
+        measured ? lastQuality_.worst[0] : window.worst(current)
+    );
+    // unmeasured: the window's minimum without swaps, at least the mesh's
+    const scalar noSwapWindowMin = worst[0];
     bool complete = true;
     // the displacement is the current evaluator's (made at the window's
     // points, a trial leaves it as it was), or was changed at all
@@ -227,46 +296,67 @@ void Foam::dcpRBFMotionSolver::trySwaps
     if (!kept && !blend.from)
     {
         // the mesh without swaps (every trial undone), measured in
-        // lastQuality_ and lastPoints_
+        // lastQuality_ and lastPoints_ (now if not yet)
         if (fieldChanged)
         {
             pointDisplacement_.primitiveFieldRef() = noSwapField;
         }
         pointsMeasured_ = noSwapMeasured;
-        return;
+        if (!measured)
+        {
+            measureWhole(r);
+        }
+        return 0;
     }
 
     // The mesh this step writes (with swapBlendSteps > 1 the blend's first
     // step, not the whole swap; made anew unless the displacement is the
     // set's), measured in full: better than without the swaps, or they
     // are abandoned
-    dcpRBFQualityRegion::summary noSwap(std::move(lastQuality_));
-    pointField noSwapPoints(std::move(lastPoints_));
+    dcpRBFQualityRegion::summary noSwap;
+    pointField noSwapPoints;
+    if (measured)
+    {
+        noSwap = std::move(lastQuality_);
+        noSwapPoints = std::move(lastPoints_);
+    }
     if ((kept && !rescue && settings_.selection().swapBlendSteps > 1) || !fieldIsSet)
     {
         r.boundaryError = interpolateDisplacement(d);
     }
-    measureQuality(r);
-    if (lastQuality_.minQuality > noSwap.minQuality)
+    measureWhole(r);
+    // better than the window without swaps is better than the whole mesh
+    // without them; else that mesh is measured to compare
+    const bool better =
+        measured
+      ? lastQuality_.minQuality > noSwap.minQuality
+      : lastQuality_.minQuality > noSwapWindowMin
+     || beatsUnswapped(noSwapField, noSwapRecord, r);
+    if (better)
     {
         r.nAdded += kept;
         r.nRemoved += kept;
-        return;
+        return kept;
     }
     controlPoints_.abandonSwaps(d);
     if (blend.from)
     {
         controlPoints_.resumeBlend(std::move(blend), d);
     }
-    pointDisplacement_.primitiveFieldRef() = noSwapField;
-    lastQuality_ = std::move(noSwap);
-    lastPoints_.transfer(noSwapPoints);
-    pointsMeasured_ = noSwapMeasured;
     const label nUndone = r.nUndone, trialPoints = r.trialPoints;
-    r = noSwapRecord;
+    if (measured)
+    {
+        pointDisplacement_.primitiveFieldRef() = noSwapField;
+        lastQuality_ = std::move(noSwap);
+        lastPoints_.transfer(noSwapPoints);
+        pointsMeasured_ = noSwapMeasured;
+        r = noSwapRecord;
+    }
+    // (else the mesh without swaps is in place, measured: see beatsUnswapped)
     r.nUndone = nUndone + kept;
     r.trialPoints = trialPoints;
     r.rescue = rescue;
+    return 0;
 }
 
 

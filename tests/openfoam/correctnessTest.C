@@ -8,6 +8,7 @@ License
 
 #include "testHelpers.H"
 #include "countingDisplacement.H"
+#include "dcpRBFCellQuality.H"
 #include "addToRunTimeSelectionTable.H"
 #include "IFstream.H"
 
@@ -246,6 +247,10 @@ struct bumpRun
 {
     std::vector<pointField> points;
     std::vector<std::vector<double>> rows;
+    //- Each step's minimum quality of the points written, over every cell
+    std::vector<double> minQuality;
+    //- The motion solver's whole-region quality measurements
+    label nMeasurements = 0;
 };
 
 bumpRun runBump(const std::string& controlPoints, label nSteps, label n = 16,
@@ -259,6 +264,8 @@ bumpRun runBump(const std::string& controlPoints, label nSteps, label n = 16,
     autoPtr<motionSolver> ms(select(c));
     auto& solver = refCast<dcpRBFMotionSolver>(ms());
     bumpRun b;
+    const pointField p0(c.mesh().points());
+    const labelList cells(identity(c.mesh().nCells()));
     for (label step = 1; step <= nSteps; ++step)
     {
         ++c.runTime();
@@ -275,13 +282,23 @@ bumpRun runBump(const std::string& controlPoints, label nSteps, label n = 16,
         scalar d = 0;
         forAll(p, i) d = max(d, mag(p[i] - fresh[i]));
         EXPECT_EQ(d, 0) << "step " << step << ": newPoints() != curPoints()";
+        // the logged minimum is the written mesh's (its worst cells are at
+        // the moving wall, in reach), after trials made before or after the
+        // measurement, rescues and blends alike
+        b.minQuality.push_back(gMin(dcpRBFCellQuality(c.mesh()).compute(cells, p0, p)));
         c.mesh().movePoints(p);
         b.points.push_back(p);
     }
     // no constraint repeated off its axis here: every step's new points
     // are the measured ones (not made a second time)
     EXPECT_EQ(solver.nReusedPoints(), nSteps);
+    b.nMeasurements = solver.nMeasurements();
     b.rows = stepRows(c);
+    EXPECT_EQ(label(b.rows.size()), nSteps);
+    for (std::size_t s = 0; s < b.rows.size() && s < b.minQuality.size(); ++s)
+    {
+        EXPECT_NEAR(b.rows[s][cMinQ], b.minQuality[s], 1e-12) << "step " << s + 1;
+    }
     return b;
 }
 
@@ -370,15 +387,17 @@ TEST_P(ErrorGuidedSwaps, NeverWorseThanTheStaticSetAtFixedN)
     (
         minQualityPerStep("selection greedy; " + fixedN, nSteps, nullptr, n)
     );
-    std::vector<std::vector<double>> rows;
-    const std::vector<double> dynamic
+    const bumpRun run
     (
-        minQualityPerStep
+        runBump
         (
             "selection dynamic; swapRule errorGuided; swapBlendSteps 1; protectSteps 0; " + fixedN,
-            nSteps, &rows, n
+            nSteps, n
         )
     );
+    const std::vector<std::vector<double>>& rows = run.rows;
+    std::vector<double> dynamic;
+    for (const auto& row : rows) dynamic.push_back(row[cMinQ]);
     ASSERT_EQ(label(greedy.size()), nSteps);
     ASSERT_EQ(label(dynamic.size()), nSteps);
     if (n > 16)
@@ -396,6 +415,15 @@ TEST_P(ErrorGuidedSwaps, NeverWorseThanTheStaticSetAtFixedN)
     // finer box from the third step), valid where full RBF is
     const std::vector<double> all(minQualityPerStep("selection all;", nSteps, nullptr, n));
     EXPECT_GT(kept, 0) << "no swap was kept";
+    // after the first step the trials pick their window from the last
+    // step's measurement: a step that keeps swaps measures its mesh once
+    // (the mesh without swaps, of a window's minimum at most the written
+    // one's, is not measured in full)
+    label keptLater = 0;
+    for (label s = 1; s < nSteps; ++s) keptLater += rows[s][cAdded] > 0;
+    EXPECT_GT(keptLater, 0) << "no swap kept after the first step";
+    EXPECT_LE(run.nMeasurements, nSteps + 1)
+        << keptLater << " steps after the first kept swaps";
     EXPECT_GT(dynamic.back(), greedy.back()) << "the swaps did not pay off";
     for (label s = 0; s < nSteps; ++s)
     {
