@@ -21,6 +21,21 @@ std::size_t StoredEvaluation::Slot::bytes() const
 }
 
 
+std::size_t StoredEvaluation::room
+(
+    const std::size_t n,
+    const std::size_t nnz,
+    const int indexBytes,
+    const std::size_t budget
+)
+{
+    const std::size_t extra = nnz/32;
+    return
+        (n + 1)*sizeof(std::size_t) + (nnz + extra)*(indexBytes + sizeof(double)) <= budget
+      ? extra : 0;
+}
+
+
 StoredEvaluation::StoredEvaluation
 (
     const RadialKernel& kernel,
@@ -83,6 +98,12 @@ bool StoredEvaluation::build(const Points& c, std::size_t budget, Slot& s) const
             return false;
         }
         s.outer = std::move(count);
+        // with room: the other slot's merges fill this storage later
+        const std::size_t extra = room(n, nnz, indexBytes, budget);
+        if (indexBytes == 1) s.inner8.reserve(nnz + extra);
+        else if (indexBytes == 2) s.inner.reserve(nnz + extra);
+        else s.inner32.reserve(nnz + extra);
+        s.values.reserve(nnz + extra);
         s.inner8.resize(indexBytes == 1 ? nnz : 0);
         s.inner.resize(indexBytes == 2 ? nnz : 0);
         s.inner32.resize(indexBytes == 4 ? nnz : 0);

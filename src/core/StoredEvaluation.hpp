@@ -205,6 +205,14 @@ private:
     //  its first row)
     static std::map<std::array<double, 3>, int> rowsOf(const Points& c);
 
+    //- Room for a few entries more kept with a compact matrix of n rows
+    //  and nnz entries (the next merge's few more do not move it: a
+    //  vector's growth would double it, copied), if the budget holds it
+    static std::size_t room
+    (
+        std::size_t n, std::size_t nnz, int indexBytes, std::size_t budget
+    );
+
     //- What merge() did
     enum class Merge { merged, notWorth, tooBig };
 

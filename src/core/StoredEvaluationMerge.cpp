@@ -124,19 +124,16 @@ StoredEvaluation::Merge StoredEvaluation::merge
     {
         return Merge::tooBig;
     }
-    // storage grown with a little room (the next merge's few entries more
-    // do not move it: a vector's growth would double it, copied), counted
-    // in bytes(); unused widths released
-    const std::size_t room =
-        (n + 1)*sizeof(std::size_t) + (nnz + nnz/32)*(indexBytes + sizeof(double)) <= budget
-      ? nnz/32 : 0;
-    const auto size = [nnz, room](auto& v, bool used)
+    // storage grown with a little room, counted in bytes(); unused widths
+    // released
+    const std::size_t extra = room(n, nnz, indexBytes, budget);
+    const auto size = [nnz, extra](auto& v, bool used)
     {
         const std::size_t m = used ? nnz : 0;
-        if (m > v.capacity() || v.capacity() > m + room)
+        if (m > v.capacity() || v.capacity() > m + extra)
         {
             std::remove_reference_t<decltype(v)> grown;
-            grown.reserve(m + (used ? room : 0));
+            grown.reserve(m + (used ? extra : 0));
             v.swap(grown);
         }
         v.resize(m);

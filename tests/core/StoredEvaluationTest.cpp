@@ -133,7 +133,9 @@ TEST(StoredEvaluation, ColumnsOfEightSixteenAndThirtyTwoBitsEqualTheEvaluator)
         StoredEvaluation s(k, frame, x);
         ASSERT_TRUE(s.prepare(c, std::size_t(1) << 30));
         EXPECT_LT(storedVsEvaluator(s, k, frame, x, c, 3), 1e-12) << n << " centres";
-        // the bytes: per entry a value and a column of 1, 2 or 4 bytes
+        // the bytes: per entry a value and a column of 1, 2 or 4 bytes,
+        // with room for 1/32 more (the budget allows it: merges later
+        // reuse the storage)
         std::size_t entries = 0;
         for (Eigen::Index i = 0; i < x.rows(); ++i)
         {
@@ -147,7 +149,8 @@ TEST(StoredEvaluation, ColumnsOfEightSixteenAndThirtyTwoBitsEqualTheEvaluator)
         EXPECT_EQ
         (
             s.bytes(),
-            (x.rows() + 1)*sizeof(std::size_t) + entries*(sizeof(double) + columnBytes)
+            (x.rows() + 1)*sizeof(std::size_t)
+          + (entries + entries/32)*(sizeof(double) + columnBytes)
         ) << n << " centres";
     }
 }
