@@ -28,6 +28,12 @@ void Foam::dcpRBFMotionSolver::measureRegion(const pointField& p)
 void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
 {
     currentPoints(lastPoints_);
+    measureLastPoints(r);
+}
+
+
+void Foam::dcpRBFMotionSolver::measureLastPoints(dcpRBFStepLog::record& r)
+{
     pointsMeasured_ = true;
     measureRegion(lastPoints_);
     ++nMeasurements_;

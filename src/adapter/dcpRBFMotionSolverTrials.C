@@ -64,10 +64,22 @@ bool Foam::dcpRBFMotionSolver::trialsBeforeMeasure() const
 }
 
 
-void Foam::dcpRBFMotionSolver::measureWhole(dcpRBFStepLog::record& r)
+void Foam::dcpRBFMotionSolver::measureWhole
+(
+    dcpRBFStepLog::record& r,
+    pointField* points
+)
 {
     clockTime timer;
-    measureQuality(r);
+    if (points)
+    {
+        lastPoints_.transfer(*points);
+        measureLastPoints(r);
+    }
+    else
+    {
+        measureQuality(r);
+    }
     r.guardTime += timer.elapsedTime();
 }
 
@@ -304,7 +316,8 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
         pointsMeasured_ = noSwapMeasured;
         if (!measured)
         {
-            measureWhole(r);
+            // (current: no trial kept, the points without swaps)
+            measureWhole(r, &current);
         }
         return 0;
     }
