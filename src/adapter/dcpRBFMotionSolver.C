@@ -324,6 +324,7 @@ void Foam::dcpRBFMotionSolver::solve()
         // 4. swapRule errorGuided: trial swaps, kept if they help; a
         //    rescue if the mesh without swaps has inverted cells
         const scalar guardBefore = r.guardTime;
+        const FixedList<label, 2> schedule(controlPoints_.trialSchedule());
         if
         (
             trySwaps(d, r, measured) == 0
@@ -331,6 +332,9 @@ void Foam::dcpRBFMotionSolver::solve()
          && lastQuality_.nInverted > 0
         )
         {
+            // the mesh without swaps (measured) has inverted cells: the
+            // rescue, backing off as if the trials had not been made
+            controlPoints_.restoreTrialSchedule(schedule);
             trySwaps(d, r, true);
         }
         r.swapTime += timer.timeIncrement() - (r.guardTime - guardBefore);

@@ -101,14 +101,19 @@ bool Foam::dcpRBFMotionSolver::beatsUnswapped
     r = noSwapRecord;
     r.nUndone = swappedRecord.nUndone;
     r.trialPoints = swappedRecord.trialPoints;
+    r.guardTime = swappedRecord.guardTime;
     measureWhole(r);
-    if (swapped.minQuality > lastQuality_.minQuality)
+    // (without swaps inverted: abandoned, the rescue follows, as it would
+    // have had that mesh been measured first)
+    if (lastQuality_.nInverted == 0 && swapped.minQuality > lastQuality_.minQuality)
     {
+        const scalar guardTime = r.guardTime;
         disp.transfer(swappedField);
         lastQuality_ = std::move(swapped);
         lastPoints_.transfer(swappedPoints);
         pointsMeasured_ = true;
         r = swappedRecord;
+        r.guardTime = guardTime;
         return true;
     }
     return false;
@@ -166,8 +171,15 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
     (
         measured ? lastQuality_.worst[0] : window.worst(current)
     );
-    // unmeasured: the window's minimum without swaps, at least the mesh's
+    // unmeasured: the window's minimum without swaps, at least the mesh's;
+    // an inverted cell there: the mesh is measured and rescued instead
+    // (solve())
     const scalar noSwapWindowMin = worst[0];
+    if (!measured && noSwapWindowMin <= 0)
+    {
+        measureWhole(r, &current);
+        return 0;
+    }
     bool complete = true;
     // the displacement is the current evaluator's (made at the window's
     // points, a trial leaves it as it was), or was changed at all
@@ -338,12 +350,12 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
         r.boundaryError = interpolateDisplacement(d);
     }
     measureWhole(r);
-    // better than the window without swaps is better than the whole mesh
-    // without them; else that mesh is measured to compare
+    // better than the window without swaps (and valid) is better than the
+    // whole mesh without them; else that mesh is measured to compare
     const bool better =
         measured
       ? lastQuality_.minQuality > noSwap.minQuality
-      : lastQuality_.minQuality > noSwapWindowMin
+      : (lastQuality_.nInverted == 0 && lastQuality_.minQuality > noSwapWindowMin)
      || beatsUnswapped(noSwapField, noSwapRecord, r);
     if (better)
     {
@@ -363,7 +375,9 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
         lastQuality_ = std::move(noSwap);
         lastPoints_.transfer(noSwapPoints);
         pointsMeasured_ = noSwapMeasured;
+        const scalar guardTime = r.guardTime;
         r = noSwapRecord;
+        r.guardTime = guardTime;
     }
     // (else the mesh without swaps is in place, measured: see beatsUnswapped)
     r.nUndone = nUndone + kept;

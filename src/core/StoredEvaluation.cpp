@@ -98,8 +98,10 @@ bool StoredEvaluation::build(const Points& c, std::size_t budget, Slot& s) const
             return false;
         }
         s.outer = std::move(count);
-        // with room: the other slot's merges fill this storage later
-        const std::size_t extra = room(n, nnz, indexBytes, budget);
+        // with room: the other slot's merges fill this storage later (if
+        // half the budget holds it: the other slot's matrix is to fit
+        // beside it, not to be refused for this one's room)
+        const std::size_t extra = room(n, nnz, indexBytes, budget/2);
         if (indexBytes == 1) s.inner8.reserve(nnz + extra);
         else if (indexBytes == 2) s.inner.reserve(nnz + extra);
         else s.inner32.reserve(nnz + extra);

@@ -254,7 +254,7 @@ struct bumpRun
 };
 
 bumpRun runBump(const std::string& controlPoints, label nSteps, label n = 16,
-    scalar perStep = 0.04)
+    scalar perStep = 0.04, const std::vector<scalar>& amplitudes = {})
 {
     // a boundary layer: cells 30 times thinner at the bottom wall than at
     // the top, where a reduced set's boundary error folds them first
@@ -269,7 +269,7 @@ bumpRun runBump(const std::string& controlPoints, label nSteps, label n = 16,
     for (label step = 1; step <= nSteps; ++step)
     {
         ++c.runTime();
-        const scalar a = perStep*step;
+        const scalar a = amplitudes.empty() ? perStep*step : amplitudes[step - 1];
         prescribe(solver.pointDisplacement(), "bottom", [a](const point& x)
         {
             return vector(0, a*std::sin(2*constant::mathematical::pi*x.x()), 0);
@@ -477,6 +477,40 @@ TEST(ErrorGuidedRescue, MakesTheFirstStepValidWhereTheStaticSetInverts)
     {
         EXPECT_EQ(rows[s][cControl], 12) << "constant N";
     }
+}
+
+
+// The trials of a step after the first come before its full measurement,
+// their window picked from the last step's; where the mesh without swaps
+// turns out inverted (here from the second step on: the static set folds
+// the bump's cells then) the rescue still follows in the same step, with
+// more kept swaps than nSwap, and the step is valid
+TEST(ErrorGuidedRescue, FollowsTheTrialsMadeBeforeTheMeasurement)
+{
+    const std::string fixedN =
+        "tolerance 1e-12; minPoints 12; maxPoints 12; reselectTolerance 1e9;";
+    const label n = 48;
+    const std::vector<scalar> amplitudes({0.01, 0.16, 0.2});
+    const label nSteps = amplitudes.size();
+    const auto minQ = [&](const std::string& controlPoints, bumpRun& b)
+    {
+        b = runBump(controlPoints, nSteps, n, 0, amplitudes);
+        std::vector<double> q;
+        for (const auto& row : b.rows) q.push_back(row[cMinQ]);
+        return q;
+    };
+    bumpRun bg, ba, bd;
+    const std::vector<double> greedy(minQ("selection greedy; " + fixedN, bg));
+    const std::vector<double> all(minQ("selection all;", ba));
+    const std::vector<double> dynamic
+    (
+        minQ("selection dynamic; nSwap 1; swapBlendSteps 1; protectSteps 0; " + fixedN, bd)
+    );
+    ASSERT_GT(greedy[0], 0) << "the static set should be valid at step 1";
+    ASSERT_LE(greedy[1], 0) << "the static set should invert cells at step 2";
+    ASSERT_GT(all[1], 0) << "full RBF should not";
+    EXPECT_GT(dynamic[1], 0) << "the rescue did not make step 2 valid";
+    EXPECT_GT(bd.rows[1][cAdded], 1) << "more swaps than nSwap in the rescue";
 }
 
 
