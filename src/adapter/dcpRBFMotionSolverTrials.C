@@ -8,117 +8,15 @@ License
 Description
     dcpRBFMotionSolver, continued: the error-guided trial swaps, judged on
     the mesh of a window of cells (dcpRBFTrialWindow), made at the window's
-    points alone (dcpRBFMotionSolverTrialMesh.C).
+    points alone (dcpRBFMotionSolverTrialMesh.C), before or after the
+    step's full measurement (dcpRBFMotionSolverTrialChecks.C).
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFMotionSolver.H"
 #include "dcpRBFTrialWindow.H"
 #include "OStringStream.H"
-#include "syncTools.H"
-#include "clockTime.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::label Foam::dcpRBFMotionSolver::nGlobalPoints(const labelUList& points)
-{
-    if (!Pstream::parRun())
-    {
-        return points.size();
-    }
-    if (!masterPointsMade_)
-    {
-        masterPoints_ = syncTools::getMasterPoints(mesh());
-        masterPointsMade_ = true;
-    }
-    // a point in any processor's list, counted by its master
-    // (labels: OpenFOAM's exchange of bools trips GCC's allocation-size
-    // warning, an error in CI)
-    labelList in(mesh().nPoints(), 0);
-    for (const label pointi : points)
-    {
-        in[pointi] = 1;
-    }
-    syncTools::syncPointList(mesh(), in, maxEqOp<label>(), label(0));
-    label n = 0;
-    forAll(in, pointi)
-    {
-        if (in[pointi] && masterPoints_.test(pointi))
-        {
-            ++n;
-        }
-    }
-    return returnReduce(n, sumOp<label>());
-}
-
-
-bool Foam::dcpRBFMotionSolver::trialsBeforeMeasure() const
-{
-    // trials due, not a rescue (the last step's mesh had no inverted cell),
-    // and the last step's measurement to pick the window from
-    return
-        controlPoints_.canTrial(false)
-     && lastQuality_.nCells > 0
-     && lastQuality_.nInverted == 0
-     && !lastQuality_.worst.empty()
-     && lastQuality_.minQuality < 1 - 1e-12;
-}
-
-
-void Foam::dcpRBFMotionSolver::measureWhole
-(
-    dcpRBFStepLog::record& r,
-    pointField* points
-)
-{
-    clockTime timer;
-    if (points)
-    {
-        lastPoints_.transfer(*points);
-        measureLastPoints(r);
-    }
-    else
-    {
-        measureQuality(r);
-    }
-    r.guardTime += timer.elapsedTime();
-}
-
-
-bool Foam::dcpRBFMotionSolver::beatsUnswapped
-(
-    const vectorField& noSwapField,
-    const dcpRBFStepLog::record& noSwapRecord,
-    dcpRBFStepLog::record& r
-)
-{
-    // the swapped mesh aside, the mesh without swaps measured in its place
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
-    vectorField swappedField(disp);
-    dcpRBFQualityRegion::summary swapped(std::move(lastQuality_));
-    pointField swappedPoints(std::move(lastPoints_));
-    const dcpRBFStepLog::record swappedRecord(r);
-    disp = noSwapField;
-    r = noSwapRecord;
-    r.nUndone = swappedRecord.nUndone;
-    r.trialPoints = swappedRecord.trialPoints;
-    r.guardTime = swappedRecord.guardTime;
-    measureWhole(r);
-    // (without swaps inverted: abandoned, the rescue follows, as it would
-    // have had that mesh been measured first)
-    if (lastQuality_.nInverted == 0 && swapped.minQuality > lastQuality_.minQuality)
-    {
-        const scalar guardTime = r.guardTime;
-        disp.transfer(swappedField);
-        lastQuality_ = std::move(swapped);
-        lastPoints_.transfer(swappedPoints);
-        pointsMeasured_ = true;
-        r = swappedRecord;
-        r.guardTime = guardTime;
-        return true;
-    }
-    return false;
-}
-
 
 Foam::label Foam::dcpRBFMotionSolver::trySwaps
 (
