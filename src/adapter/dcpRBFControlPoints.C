@@ -115,7 +115,11 @@ bool Foam::dcpRBFControlPoints::readState()
     set_.reset(std::vector<Eigen::Index>(indices.begin(), indices.end()));
     set_.setAges(std::vector<int>(ages.begin(), ages.end()));
     trialWait_ = state_.getOrDefault<label>("trialWait", 0);
-    trialBackoff_ = state_.getOrDefault<label>("trialBackoff", 1);
+    trialBackoff_ = state_.getOrDefault<label>
+    (
+        "trialBackoff",
+        settings_.selection().trialBackoff
+    );
     if (state_.found("blendStep"))
     {
         blendStep_ = state_.get<label>("blendStep");
@@ -170,7 +174,7 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
     leavingReach_(0),
     blendStep_(0),
     trialWait_(0),
-    trialBackoff_(1),
+    trialBackoff_(settings.selection().trialBackoff),
     state_
     (
         "dcpRBFState", mesh,
@@ -448,7 +452,7 @@ void Foam::dcpRBFControlPoints::endStep()
     if (stepFrom_)
     {
         // this step's swaps were kept
-        trialBackoff_ = 1;
+        trialBackoff_ = settings_.selection().trialBackoff;
         stepFrom_.reset();
     }
     set_.nextStep();

@@ -177,7 +177,8 @@ void Foam::dcpRBFControlPoints::resumeBlend
 void Foam::dcpRBFControlPoints::backOff()
 {
     trialWait_ = trialBackoff_;
-    trialBackoff_ = min(2*trialBackoff_, maxTrialWait);
+    trialBackoff_ =
+        min(2*trialBackoff_, dcpRBFSelectionSettings::maxTrialWait);
 }
 
 // ************************************************************************* //

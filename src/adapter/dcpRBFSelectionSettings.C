@@ -44,7 +44,7 @@ const Foam::wordList Foam::dcpRBFSelectionSettings::keywords
 ({
     "selection", "tolerance", "minPoints", "maxPoints", "doubleEdged",
     "selectOn", "reselectTolerance", "nSwap", "protectSteps", "swapRule",
-    "swapBlendSteps", "trialPoints"
+    "swapBlendSteps", "trialPoints", "trialBackoff"
 });
 
 namespace
@@ -53,9 +53,13 @@ namespace
     //  errorGuided alone
     const Foam::wordList dynamicKeywords
     ({
-        "nSwap", "protectSteps", "swapRule", "swapBlendSteps", "trialPoints"
+        "nSwap", "protectSteps", "swapRule", "swapBlendSteps", "trialPoints",
+        "trialBackoff"
     });
-    const Foam::wordList errorGuidedKeywords({"swapBlendSteps", "trialPoints"});
+    const Foam::wordList errorGuidedKeywords
+    ({
+        "swapBlendSteps", "trialPoints", "trialBackoff"
+    });
 }
 
 
@@ -85,6 +89,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     protectSteps = r.getLabel("protectSteps", 3, 0, 1000000);
     swapBlendSteps = r.getLabel("swapBlendSteps", 4, 1, 1000);
     trialAt = r.getEnum("trialPoints", trialPointsNames, trialPoints::window);
+    trialBackoff = r.getLabel("trialBackoff", 1, 1, maxTrialWait);
     for (const word& k : errorGuidedKeywords)
     {
         if (swapRule == rule::nearest && dict.found(k))

@@ -58,7 +58,7 @@ std::vector<std::vector<double>> stepRows(const testCase& c)
 
 // Columns of dcpRBF.dat (dcpRBFStepLog)
 enum column { cTime, cControl, cAdded, cRemoved, cGuard, cCells, cMinQ, cMeanQ,
-    cError, cAtMax };
+    cError, cAtMax, cSwapTime, cSelectTime, cInterpolateTime, cGuardTime, cUndone };
 
 
 class OneEvaluation : public ::testing::TestWithParam<std::tuple<int, std::string>> {};
@@ -512,6 +512,60 @@ TEST(ErrorGuidedRescue, FollowsTheTrialsMadeBeforeTheMeasurement)
     EXPECT_GT(dynamic[1], 0) << "the rescue did not make step 2 valid";
     EXPECT_GT(bd.rows[1][cAdded], 1) << "more swaps than nSwap in the rescue";
 }
+
+
+// The trials' back-off: after an undone trial the next waits trialBackoff
+// steps, doubling per further undone one (up to 16), back to trialBackoff
+// after a kept swap (at once: swapBlendSteps 1). Every step's trials
+// (columns nAdded, nUndone) follow that schedule; no rescue on this bump
+class TrialBackoff : public ::testing::TestWithParam<label> {};
+
+TEST_P(TrialBackoff, TrialsWaitAsScheduled)
+{
+    const label backoff = GetParam();
+    const label nSteps = 24;
+    const std::string controlPoints =
+        "selection dynamic; nSwap 1; swapBlendSteps 1; protectSteps 0;"
+        " tolerance 1e-12; minPoints 12; maxPoints 12; reselectTolerance 1e9;"
+        " trialBackoff " + std::to_string(backoff) + ";";
+    const bumpRun b(runBump(controlPoints, nSteps, 16, 0.01));
+    ASSERT_EQ(label(b.rows.size()), nSteps);
+    label wait = 0, next = backoff, nUndoneSteps = 0, nTrialSteps = 0, nWaited = 0;
+    for (label s = 0; s < nSteps; ++s)
+    {
+        const auto& row = b.rows[s];
+        ASSERT_GT(row[cMinQ], 0) << "step " << s + 1 << ": a rescue would not wait";
+        const bool kept = row[cAdded] > 0, undone = row[cUndone] > 0;
+        if (wait > 0)
+        {
+            EXPECT_FALSE(kept || undone) << "step " << s + 1 << ": a trial while waiting "
+                << wait << " more step(s)";
+            ++nWaited;
+        }
+        nTrialSteps += kept || undone;
+        if (kept)
+        {
+            next = backoff;
+        }
+        else if (undone)
+        {
+            ++nUndoneSteps;
+            wait = next;
+            next = std::min<label>(2*next, 16);
+        }
+        if (wait > 0) --wait;
+    }
+    EXPECT_GT(nUndoneSteps, 1) << "no back-off to check";
+    EXPECT_GT(nWaited, 0);
+    // the trials go on after the first wait: the schedule, not a stop
+    EXPECT_GT(nTrialSteps, nUndoneSteps > 0 ? 2 : 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Steps, TrialBackoff, ::testing::Values(1, 2, 4),
+    [](const ::testing::TestParamInfo<label>& i)
+    {
+        return "trialBackoff" + std::to_string(i.param);
+    });
 
 
 // A kept swap changes the interpolant; phased in over swapBlendSteps the
