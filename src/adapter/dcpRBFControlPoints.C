@@ -77,6 +77,7 @@ void Foam::dcpRBFControlPoints::storeState(dictionary& state) const
     state.set("ready", ready_);
     state.set("trialWait", trialWait_);
     state.set("trialBackoff", trialBackoff_);
+    state.set("trialQuality", trialQuality_);
     state.set("indices", labelList(set_.indices().begin(), set_.indices().end()));
     state.set("ages", labelList(set_.ages().begin(), set_.ages().end()));
     if (blendFrom_)
@@ -120,6 +121,7 @@ bool Foam::dcpRBFControlPoints::readState()
         "trialBackoff",
         settings_.selection().trialBackoff
     );
+    trialQuality_ = state_.getOrDefault<scalar>("trialQuality", 1);
     if (state_.found("blendStep"))
     {
         blendStep_ = state_.get<label>("blendStep");
@@ -175,6 +177,8 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
     blendStep_(0),
     trialWait_(0),
     trialBackoff_(settings.selection().trialBackoff),
+    trialQuality_(1),
+    backedOff_(false),
     state_
     (
         "dcpRBFState", mesh,
@@ -447,7 +451,7 @@ bool Foam::dcpRBFControlPoints::addNear
 }
 
 
-void Foam::dcpRBFControlPoints::endStep()
+void Foam::dcpRBFControlPoints::endStep(const scalar minQuality)
 {
     if (stepFrom_)
     {
@@ -456,6 +460,11 @@ void Foam::dcpRBFControlPoints::endStep()
         stepFrom_.reset();
     }
     set_.nextStep();
+    if (backedOff_)
+    {
+        trialQuality_ = minQuality;
+        backedOff_ = false;
+    }
     if (trialWait_ > 0)
     {
         --trialWait_;

@@ -24,6 +24,22 @@ bool Foam::dcpRBFControlPoints::canTrial(const bool rescue) const
 }
 
 
+bool Foam::dcpRBFControlPoints::endWaitIfWorse(const scalar minQuality)
+{
+    if
+    (
+        trialWait_ > 0
+     && trialQuality_ - minQuality > settings_.selection().trialQualityDrop
+    )
+    {
+        // the mesh has got worse since the set was found to fit it
+        trialWait_ = 0;
+        return true;
+    }
+    return false;
+}
+
+
 bool Foam::dcpRBFControlPoints::proposeSwap
 (
     const dcpRBFQualityRegion::rankedCell& worst,
@@ -177,6 +193,7 @@ void Foam::dcpRBFControlPoints::resumeBlend
 void Foam::dcpRBFControlPoints::backOff()
 {
     trialWait_ = trialBackoff_;
+    backedOff_ = true;
     trialBackoff_ =
         min(2*trialBackoff_, dcpRBFSelectionSettings::maxTrialWait);
 }

@@ -323,7 +323,12 @@ void Foam::dcpRBFMotionSolver::solve()
 
         // 4. swapRule errorGuided: trial swaps, kept if they help; a
         //    rescue if the mesh without swaps has inverted cells
+        //    (waiting after undone ones unless the mesh got worse since)
         const scalar guardBefore = r.guardTime;
+        if (measured)
+        {
+            controlPoints_.endWaitIfWorse(lastQuality_.minQuality);
+        }
         const FixedList<label, 2> schedule(controlPoints_.trialSchedule());
         if
         (
@@ -344,7 +349,7 @@ void Foam::dcpRBFMotionSolver::solve()
         r.guardTime += timer.timeIncrement();
 
         r.nControl = controlPoints_.size();
-        controlPoints_.endStep();
+        controlPoints_.endStep(r.minQuality);
         if (mesh().time().writeTime())
         {
             writeControlPoints(d);

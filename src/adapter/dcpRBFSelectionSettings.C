@@ -44,7 +44,7 @@ const Foam::wordList Foam::dcpRBFSelectionSettings::keywords
 ({
     "selection", "tolerance", "minPoints", "maxPoints", "doubleEdged",
     "selectOn", "reselectTolerance", "nSwap", "protectSteps", "swapRule",
-    "swapBlendSteps", "trialPoints", "trialBackoff"
+    "swapBlendSteps", "trialPoints", "trialBackoff", "trialQualityDrop"
 });
 
 namespace
@@ -54,11 +54,11 @@ namespace
     const Foam::wordList dynamicKeywords
     ({
         "nSwap", "protectSteps", "swapRule", "swapBlendSteps", "trialPoints",
-        "trialBackoff"
+        "trialBackoff", "trialQualityDrop"
     });
     const Foam::wordList errorGuidedKeywords
     ({
-        "swapBlendSteps", "trialPoints", "trialBackoff"
+        "swapBlendSteps", "trialPoints", "trialBackoff", "trialQualityDrop"
     });
 }
 
@@ -89,7 +89,8 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     protectSteps = r.getLabel("protectSteps", 3, 0, 1000000);
     swapBlendSteps = r.getLabel("swapBlendSteps", 4, 1, 1000);
     trialAt = r.getEnum("trialPoints", trialPointsNames, trialPoints::window);
-    trialBackoff = r.getLabel("trialBackoff", 1, 1, maxTrialWait);
+    trialBackoff = r.getLabel("trialBackoff", 4, 1, maxTrialWait);
+    trialQualityDrop = r.getScalar("trialQualityDrop", 0.05, 0, 1);
     for (const word& k : errorGuidedKeywords)
     {
         if (swapRule == rule::nearest && dict.found(k))
