@@ -33,7 +33,7 @@ SELECTIONS = [
     ("all", "selection all;", None),
     ("greedy (tol 1e-3)", "selection greedy; tolerance 1e-3;", None),
     # the library's defaults for dynamic: swapRule errorGuided, nSwap 4 (trial swaps),
-    # swapBlendSteps 4
+    # swapBlendSteps 4, trialBackoff 4, trialQualityDrop 0.05
     ("dynamic (library default: errorGuided)", "selection dynamic; tolerance 1e-3;", None),
     ("dynamic (paper rule: swapRule nearest)",
      "selection dynamic; tolerance 1e-3; nSwap 1; {swapRuleNearest}", "swapRule"),
