@@ -343,13 +343,16 @@ void Foam::dcpRBFMotionSolver::solve()
             trySwaps(d, r, true);
         }
         r.swapTime += timer.timeIncrement() - (r.guardTime - guardBefore);
+        // (before the guard: what a later step's mesh without swaps is
+        // compared with, in endWaitIfWorse)
+        const scalar unguardedMin = r.minQuality;
 
         // 5. Guard the quality
         guardQuality(d, r);
         r.guardTime += timer.timeIncrement();
 
         r.nControl = controlPoints_.size();
-        controlPoints_.endStep(r.minQuality);
+        controlPoints_.endStep(unguardedMin);
         if (mesh().time().writeTime())
         {
             writeControlPoints(d);
