@@ -99,6 +99,12 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
                 << "Keyword " << k << " has no effect with swapRule nearest."
                 << " It belongs to swapRule errorGuided" << exit(FatalIOError);
         }
+        if (nSwap == 0 && dict.found(k))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword " << k << " has no effect with nSwap 0 (no trial"
+                << " swaps). It needs nSwap >= 1" << exit(FatalIOError);
+        }
     }
 
     if (selection == mode::all)

@@ -83,6 +83,7 @@ std::vector<badInput> catalogue()
         {"TrialBackoffWithGreedy", mv + st + r + "controlPoints { selection greedy; trialBackoff 2; }", "trialBackoff"},
         {"ZeroTrialQualityDrop", mv + st + r + "controlPoints { selection dynamic; trialQualityDrop 0; }", "trialQualityDrop"},
         {"TrialQualityDropAboveOne", mv + st + r + "controlPoints { selection dynamic; trialQualityDrop 1.5; }", "trialQualityDrop"},
+        {"TrialBackoffWithoutSwaps", mv + st + r + "controlPoints { selection dynamic; nSwap 0; trialBackoff 2; }", "nSwap 0"},
         {"TrialQualityDropWithNearest", mv + st + r + "controlPoints { selection dynamic; swapRule nearest; trialQualityDrop 0.1; }", "trialQualityDrop"},
         {"RotationWithoutRotationInterpolation", mv + st + r + "rotation { centre (0.5 0 0); }", "rotationInterpolation"},
         {"RotationInterpolationNotBool", mv + st + r + "rotationInterpolation maybe;", "rotationInterpolation"},
