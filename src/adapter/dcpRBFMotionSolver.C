@@ -325,10 +325,8 @@ void Foam::dcpRBFMotionSolver::solve()
         //    rescue if the mesh without swaps has inverted cells
         //    (waiting after undone ones unless the mesh got worse since)
         const scalar guardBefore = r.guardTime;
-        if (measured)
-        {
-            controlPoints_.endWaitIfWorse(lastQuality_.minQuality);
-        }
+        const bool waitEnded =
+            measured && controlPoints_.endWaitIfWorse(lastQuality_.minQuality);
         const FixedList<label, 2> schedule(controlPoints_.trialSchedule());
         if
         (
@@ -343,6 +341,7 @@ void Foam::dcpRBFMotionSolver::solve()
             trySwaps(d, r, true);
         }
         r.swapTime += timer.timeIncrement() - (r.guardTime - guardBefore);
+        r.waitEnded = waitEnded;
         // (before the guard: what a later step's mesh without swaps is
         // compared with, in endWaitIfWorse)
         const scalar unguardedMin = r.minQuality;

@@ -62,6 +62,10 @@ void Foam::dcpRBFStepLog::write(const record& r)
     line.precision(4);
     line<< "dcpRBF: control points " << r.nControl << " (+" << r.nAdded
         << " -" << r.nRemoved << ", guard +" << r.nGuard;
+    if (r.waitEnded)
+    {
+        line<< ", wait ended";
+    }
     if (r.nUndone)
     {
         line<< ", " << r.nUndone << " trial swap(s) undone";

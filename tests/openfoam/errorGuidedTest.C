@@ -13,6 +13,7 @@ License
 #include <gtest/gtest.h>
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <tuple>
 
 using namespace Foam;
@@ -245,9 +246,19 @@ TEST_P(TrialBackoff, TrialsWaitAsScheduled)
     controlPoints<< "selection dynamic; nSwap 1; swapBlendSteps 1; protectSteps 0;"
         " tolerance 1e-12; minPoints 12; maxPoints 12; reselectTolerance 1e9;"
         " trialBackoff " << backoff << "; trialQualityDrop " << drop << ";";
+    ::testing::internal::CaptureStdout();
     const bumpRun b(runBump(controlPoints.str(), nSteps, 16, 0.01));
+    const std::string log(::testing::internal::GetCapturedStdout());
     ASSERT_EQ(label(b.rows.size()), nSteps);
     const trialSchedule t(b.rows, backoff, drop);
+    // the log says so where a wait ended early (a trial at each, here)
+    label nSaid = 0;
+    for (auto i = log.find(", wait ended"); i != std::string::npos;
+        i = log.find(", wait ended", i + 1))
+    {
+        ++nSaid;
+    }
+    EXPECT_EQ(nSaid, t.nEarly) << "log lines ', wait ended'";
     EXPECT_GT(t.nUndoneSteps, 1) << "no back-off to check";
     // every step due for a trial made one (a swap to propose on this bump)
     EXPECT_EQ(t.nMissed, 0);
