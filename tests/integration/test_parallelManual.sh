@@ -213,11 +213,11 @@ test_parallelManual_airfoil2D_bendingWing_dcpTrials_equalsSerial() {
         postProcessing/dcpRBF/0/dcpRBF.dat \
         || fail "no trials at an inverted step in the serial run (dcpRBF.dat: no row with minQuality <= 0 and nUndone >= 2)" \
         || return 1
-    # the log lines as the README shows them, the trials' and the rescue's tags included
+    # the log lines as the README shows them, the trials' (wait ended, undone, points) and the rescue's tags included
     grep -q ', rescue), quality min' log.moveDynamicMesh || fail "no ', rescue' in the log" || return 1
     local bad
     bad=$(grep '^dcpRBF: control points' log.moveDynamicMesh \
-        | grep -v -E '^dcpRBF: control points [0-9]+ \(\+[0-9]+ -[0-9]+, guard \+[0-9]+(, [0-9]+ trial swap\(s\) undone)?(, trials at [0-9]+ points)?(, rescue)?\), quality min ' \
+        | grep -v -E '^dcpRBF: control points [0-9]+ \(\+[0-9]+ -[0-9]+, guard \+[0-9]+(, wait ended)?(, [0-9]+ trial swap\(s\) undone)?(, trials at [0-9]+ points)?(, rescue)?\), quality min ' \
         | head -n 1)
     [ -z "$bad" ] || fail "a log line not as documented: ${bad:0:120}" || return 1
     # the trials' points counted as in serial (a point on the processors'
