@@ -89,8 +89,9 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     protectSteps = r.getLabel("protectSteps", 3, 0, 1000000);
     swapBlendSteps = r.getLabel("swapBlendSteps", 4, 1, 1000);
     trialAt = r.getEnum("trialPoints", trialPointsNames, trialPoints::window);
-    trialBackoff = r.getLabel("trialBackoff", 4, 1, maxTrialWait);
-    trialQualityDrop = r.getScalar("trialQualityDrop", 0.05, 0, 1);
+    trialBackoff = r.getLabel("trialBackoff", trialBackoff, 1, maxTrialWait);
+    trialQualityDrop =
+        r.getScalar("trialQualityDrop", trialQualityDrop, 0, 1);
     for (const word& k : errorGuidedKeywords)
     {
         if (swapRule == rule::nearest && dict.found(k))
