@@ -1,14 +1,25 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
 # Helpers for tests/integration/run (sourced).
 nPassed=0
 nFailed=0
 failures=()
 
-# runTest NAME FUNCTION: run FUNCTION in a fresh case folder, record the result
+# runTest NAME FUNCTION: run FUNCTION in a fresh case folder and record the
+# result. The test runs in a subshell of its own under errexit and pipefail:
+# a command that fails outside a condition ends it (failed), and so does
+# fail(). Its output goes to log.test in the case folder.
 runTest() {
-    local name="$1" fn="$2" case="$work/$1" start=$SECONDS out
+    local name="$1" fn="$2" case="$work/$1" start=$SECONDS rc
     mkdir -p "$case"
-    if out=$(cd "$case" && "$fn" 2>&1)
+    (
+        cd "$case" || exit 1
+        set -eE -o pipefail
+        trap 'echo "FAILED: $BASH_COMMAND (status $?, line $LINENO of ${BASH_SOURCE[0]##*/})"' ERR
+        "$fn"
+    ) > "$case/log.test" 2>&1
+    rc=$?
+    if [ "$rc" -eq 0 ]
     then
         nPassed=$((nPassed + 1))
         printf 'PASS  %-40s (%ds)\n' "$name" $((SECONDS - start))
@@ -16,13 +27,20 @@ runTest() {
         nFailed=$((nFailed + 1))
         failures+=("$name")
         printf 'FAIL  %-40s (%ds)\n' "$name" $((SECONDS - start))
-        printf '%s\n' "$out" | tail -n 15 | sed 's/^/      | /'
+        tail -n 15 "$case/log.test" | sed 's/^/      | /'
         echo "      | case kept in $case"
     fi
 }
 
-# fail MESSAGE: print and return 1
-fail() { echo "$*"; return 1; }
+# fail MESSAGE: print MESSAGE and end the test (its subshell) as failed,
+# wherever it is called: in a helper, after ||, in a condition
+fail() { echo "FAILED: $*"; exit 1; }
+
+# reportsSetUp KERNEL DIM: the log's set-up line names KERNEL and DIM (2D or 3D)
+reportsSetUp() {
+    grep -q "^dcpRBF: [0-9]* boundary points ($1, supportRadius [^,]*, polynomial [a-z]*, $2, selection " log.moveDynamicMesh \
+        || fail "no set-up line for $1 in $2: $(grep -m1 'boundary points' log.moveDynamicMesh)"
+}
 
 # warningText START LINES WHY: the warning of log.moveDynamicMesh starting
 # with START (and its next LINES lines) on one line in the file warning;
@@ -37,36 +55,61 @@ warningText() {
 # at most MAXREL; prints it
 pointsAgree() {
     local diff
-    diff=$(awk -f "$here/comparePoints.awk" "$1" "$2") || fail "$diff" || return 1
+    diff=$(awk -f "$here/comparePoints.awk" "$1" "$2") || fail "$diff"
     echo "$4: max difference, relative, points: $diff"
     awk -v r="$(echo "$diff" | cut -d' ' -f2)" -v m="$3" 'BEGIN { exit !(r <= m) }' \
         || fail "$4 differ: $diff"
 }
 
-# run APP ARGS...: run an OpenFOAM application, log to log.APP[.n]
+# run APP ARGS...: run an OpenFOAM application, log to log.APP[.n] (n: the
+# number of its logs so far); fails the test if the application fails
 run() {
-    local log="log.$1"
-    [ -f "$log" ] && log="$log.$(ls log.$1* | wc -l)"
-    "$@" > "$log" 2>&1 || fail "$* failed: see $(pwd)/$log" || return 1
+    local log="log.$1" logs
+    if [ -f "$log" ]
+    then
+        logs=("log.$1"*)
+        log="$log.${#logs[@]}"
+    fi
+    "$@" > "$log" 2>&1 \
+        || fail "$* failed: see $(pwd)/$log$(grep -h -A4 "FOAM FATAL" "$log" | grep -v '^ *$' | head -n 6 | sed 's/^/\n    /')"
+}
+
+# countLines REGEX FILE: the number of lines of FILE matching REGEX (awk),
+# 0 included (grep -c fails on 0); fails the test if FILE is missing
+countLines() {
+    [ -f "$2" ] || fail "no $2"
+    awk -v re="$1" '$0 ~ re { n++ } END { print n + 0 }' "$2"
+}
+
+# writtenTimes DIR: the time folders of DIR other than 0, one a line
+writtenTimes() {
+    local d
+    for d in "$1"/[0-9]*
+    do
+        d="${d##*/}"
+        [[ "$d" =~ ^[0-9.eE+-]+$ ]] && [ "$d" != 0 ] && echo "$d"
+    done
+    return 0
 }
 
 # writeFile PATH CLASS <<body: a dictionary with a FoamFile header
 writeFile() {
+    local object
+    object=$(basename "$1")
     mkdir -p "$(dirname "$1")"
     {
-        printf 'FoamFile { version 2.0; format ascii; class %s; object %s; }\n' "$2" "$(basename "$1")"
+        printf 'FoamFile { version 2.0; format ascii; class %s; object %s; }\n' "$2" "$object"
         cat
     } > "$1"
 }
 
 # meshOkAtEveryTime: checkMesh passes at every written time after 0
 meshOkAtEveryTime() {
-    local nTimes
-    run checkMesh -noZero -noTopology || return 1
-    nTimes=$(ls -d [0-9]* | grep -v '^0$' | wc -l)
+    local nTimes nOk
+    run checkMesh -noZero -noTopology
+    nTimes=$(writtenTimes . | wc -l)
     [ "$nTimes" -gt 0 ] || fail "no time written"
-    local nOk
-    nOk=$(grep -c '^Mesh OK' log.checkMesh)
+    nOk=$(countLines '^Mesh OK' log.checkMesh)
     [ "$nOk" -eq "$nTimes" ] || fail "checkMesh: $nOk of $nTimes times OK: $(grep -m3 'Failed\|\*\*\*' log.checkMesh)"
 }
 

@@ -1,4 +1,5 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
 # Integration tests: OpenFOAM's incompressible/pimpleFoam/laminar/movingCone
 # as a planar 2D case (the tutorial is a wedge, which dcpRBF refuses: here
 # its blockMeshDict with the same vertices in x and y, front and back empty

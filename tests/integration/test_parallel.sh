@@ -1,4 +1,5 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
 # Integration tests: parallel runs give the serial points.
 
 # parallelEqualsSerial TIME [DECOMPOSITION]: run moveDynamicMesh serial
@@ -18,8 +19,7 @@ EOT
     (
         cd par || exit 1
         run decomposePar || exit 1
-        export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
-        run mpirun -np 2 moveDynamicMesh -parallel || exit 1
+        OMP_NUM_THREADS=1 run mpirun -np 2 moveDynamicMesh -parallel || exit 1
         run reconstructPar -time "$time" || exit 1
     ) || fail "parallel run failed (see par/log.*)" || return 1
     pointsAgree "$time/polyMesh/points" "par/$time/polyMesh/points" 1e-10 \
@@ -53,7 +53,8 @@ test_threads_sameResultOn1And2Threads() {
     for selection in "selection all;" "selection greedy; tolerance 1e-3;" "selection dynamic; tolerance 1e-2;"
     do
         dir="${selection%%;*}"; dir="${dir#selection }"
-        mkdir -p "$dir" && (
+        mkdir -p "$dir"
+        if ! (
             cd "$dir" || exit 1
             modeRun3D "$selection" || exit 1
             foamDictionary system/controlDict -entry writePrecision -set 17 > /dev/null
@@ -61,7 +62,11 @@ test_threads_sameResultOn1And2Threads() {
             mkdir -p two && cp -r constant system 0 two/
             OMP_NUM_THREADS=1 run moveDynamicMesh || exit 1
             (cd two && OMP_NUM_THREADS=2 run moveDynamicMesh) || exit 1
-        ) || { failed+=("$dir: run failed"); continue; }
+        )
+        then
+            failed+=("$dir: run failed")
+            continue
+        fi
         diff=$(awk -f "$here/comparePoints.awk" "$dir/0.5/polyMesh/points" "$dir/two/0.5/polyMesh/points") \
             || { failed+=("$dir: $diff"); continue; }
         echo "$dir: 1 vs 2 threads: $diff"
@@ -102,7 +107,6 @@ EOT
     run decomposePar || return 1
     (
         unset OMP_NUM_THREADS
-        export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
         run mpirun --bind-to none -np 2 moveDynamicMesh -parallel
     ) || return 1
     n=$(threadsIn log.mpirun)

@@ -1,4 +1,5 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
 # Integration tests: a run restarted from a written time reproduces the
 # uninterrupted run.
 
@@ -48,14 +49,12 @@ restartEqualsUninterrupted() {
         "uninterrupted vs restarted at t = 1 ($np processors)" || return 1
     # the control set's state (set, ages, the trials' wait, back-off and
     # reference quality, a blend) the same as the uninterrupted run's
-    local state=uniform/dcpRBFState
-    [ "$np" -eq 1 ] || state=processor0/1/$state
-    [ "$np" -eq 1 ] && state=1/$state
-    if [ -f "$state" ]
-    then
-        stateAgrees "$state" "restart/$state" \
-            || fail "dcpRBFState at t = 1 differs after the restart ($state)"
-    fi
+    local state=1/uniform/dcpRBFState
+    [ "$np" -eq 1 ] || state=processor0/$state
+    [ -f "$state" ] || fail "no $state written by the uninterrupted run"
+    [ -f "restart/$state" ] || fail "no restart/$state written by the restarted run"
+    stateAgrees "$state" "restart/$state" \
+        || fail "dcpRBFState at t = 1 differs after the restart ($state)"
 }
 
 # stateAgrees A B: the two dictionaries have the same words, and numbers

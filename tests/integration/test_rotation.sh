@@ -1,4 +1,5 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
 # Integration tests of rotationInterpolation (issue 11): large rotations stay
 # valid where displacement interpolation folds cells; serial == parallel on
 # a manual decomposition through the wing; a restart continues the angle

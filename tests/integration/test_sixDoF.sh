@@ -1,4 +1,5 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
 # Integration tests: dcpRBF driven by a 6-DoF rigid body (the README recipe).
 # OpenFOAM's incompressible/pimpleFoam/RAS/wingMotion/wingMotion2D_pimpleFoam
 # (fields, schemes, solvers, kOmegaSST, the body's mass, inertia, constraints
@@ -126,18 +127,11 @@ $(sixDoFBody)
 EOT
 }
 
-# runShowingError APP ARGS...: run, and on failure also print the FatalError
-runShowingError() {
-    run "$@" && return 0
-    grep -h -A4 "FOAM FATAL" $(ls -t log."$1"* | head -1) | grep -v '^ *$' | head -6
-    return 1
-}
-
 test_sixDoF_dcpRBF_wingMovesMeshValid() {
     local diff
     wingMotionCase || return 1
     sixDoFDcpRBF
-    runShowingError pimpleFoam || return 1
+    run pimpleFoam || return 1
     tail -n 3 log.pimpleFoam | grep -q '^End' || fail "pimpleFoam did not end"
     grep -q "dcpRBF: control points" log.pimpleFoam || fail "no dcpRBF log line" || return 1
     grep -q "Centre of rotation" log.pimpleFoam || fail "no 6-DoF report in the log" || return 1
@@ -187,7 +181,7 @@ test_sixDoF_bodyMotionAsStockSolver() {
     cp -r 0 constant system stock/
     (cd stock && sixDoFStock && run pimpleFoam) || fail "stock run (sixDoFRigidBodyMotion) failed: see stock/log.pimpleFoam" || return 1
     sixDoFDcpRBF
-    runShowingError pimpleFoam || return 1
+    run pimpleFoam || return 1
     echo "6-DoF state (centre of rotation, orientation), stock solver vs dcpRBF: time, max difference"
     for t in $(cd stock && foamListTimes 2>/dev/null)
     do

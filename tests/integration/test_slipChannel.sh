@@ -1,4 +1,5 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
 # Integration tests: a body pitching between curved slip walls (from a new
 # user's trial). A 2D annulus-segment channel (centre (0 0), radii 2 and 5,
 # 30-150 deg; inlet and outlet static) with an ellipse (chord 1) at (0 3.5)

@@ -1,4 +1,5 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
 # Integration tests: a body close to sliding walls in 3D (from a new user's
 # trial). A box wing (chord 1 in x, span 1 in y, thickness 0.2 in z) on a
 # symmetryPlane (y = 0) in a duct with slip sides (z = +-0.75, 0.65 from

@@ -1,4 +1,5 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
 # Integration tests: the pitchingAirfoil2D and sixDoFAirfoil2D tutorials,
 # shortened through their Allrun options, each run on a copy of the tutorials
 # (tutorials/common and the mesh scripts they share) in the test folder.
@@ -35,8 +36,8 @@ endsOk() {
 # checkMeshAllOk DIR: DIR/log.checkMesh.moved says Mesh OK for every written time
 checkMeshAllOk() {
     local nTimes nOk
-    nTimes=$(cd "$1" && ls -d [0-9]* | grep -E '^[0-9.eE+-]+$' | grep -v '^0$' | wc -l)
-    nOk=$(grep -c '^Mesh OK' "$1/log.checkMesh.moved")
+    nTimes=$(writtenTimes "$1" | wc -l)
+    nOk=$(countLines '^Mesh OK' "$1/log.checkMesh.moved")
     [ "$nTimes" -gt 0 ] || fail "$1: no time written" || return 1
     [ "$nOk" -eq "$nTimes" ] || fail "$1: checkMesh OK at $nOk of $nTimes times: $(grep -m3 'Failed\|\*\*\*' "$1/log.checkMesh.moved")"
 }

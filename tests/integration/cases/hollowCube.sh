@@ -1,4 +1,5 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
 # Source me: write_hollowCube DIR N -- a 3D case: a cube body (patch "body",
 # half side 0.5) in a cube box (patch "outer", half side 2), six hex blocks
 # of N^3 cells, with controlDict/fvSchemes/fvSolution for moveDynamicMesh.
