@@ -49,7 +49,18 @@ namespace Foam
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::dcpRBFMotionSolver::checkPatches() const
+Foam::string Foam::dcpRBFMotionSolver::selfMovedNames() const
+{
+    string names;
+    for (const label patchi : selfMoved_)
+    {
+        names += (names.empty() ? "" : " ") + mesh().boundaryMesh()[patchi].name();
+    }
+    return names;
+}
+
+
+void Foam::dcpRBFMotionSolver::checkPatches()
 {
     const polyBoundaryMesh& patches = mesh().boundaryMesh();
     const pointVectorField::Boundary& bf = pointDisplacement_.boundaryField();
@@ -57,19 +68,6 @@ void Foam::dcpRBFMotionSolver::checkPatches() const
     forAll(patches, patchi)
     {
         const polyPatch& pp = patches[patchi];
-        if
-        (
-            pp.coupled()
-         && (!isA<processorPolyPatch>(pp) || isA<processorCyclicPolyPatch>(pp))
-        )
-        {
-            FatalErrorInFunction
-                << "Patch " << pp.name() << " is of type " << pp.type()
-                << ": dcpRBF does not move the points of coupled patches"
-                << " (cyclic, cyclicAMI, ...) consistently on both sides."
-                << " Use a mesh without periodic patches, or another motion"
-                << " solver" << exit(FatalError);
-        }
         if (settings_.movingPatchIDs().found(patchi))
         {
             if (!bf[patchi].fixesValue())
@@ -94,8 +92,28 @@ void Foam::dcpRBFMotionSolver::checkPatches() const
          && !polyPatch::constraintType(pp.type())
         )
         {
-            unlisted.append(pp.name());
+            if (bf[patchi].fixesValue())
+            {
+                selfMoved_.append(patchi);
+            }
+            else
+            {
+                unlisted.append(pp.name());
+            }
         }
+    }
+    if (selfMoved_.size())
+    {
+        WarningInFunction
+            << "Patches in neither movingPatches nor staticPatches whose"
+            << " pointDisplacement condition fixes their points' values: "
+            << selfMovedNames().c_str() << nl
+            << "    Their points go where their conditions put them, but"
+            << " the interpolation does not know of them: if they move, only"
+            << " the cells touching them follow (they fold for a motion"
+            << " larger than those cells; the check covers them). List a"
+            << " patch that moves under movingPatches, one that stays put"
+            << " under staticPatches." << endl;
     }
     if (unlisted.size())
     {
@@ -190,6 +208,17 @@ void Foam::dcpRBFMotionSolver::initialise()
 {
     setThreads();
     checkPatches();
+    if (region_.size() == 0)
+    {
+        FatalIOErrorInFunction(coeffDict())
+            << "supportRadius " << Foam::name(settings_.kernel().radius()).c_str() << " reaches"
+            << " no cell centre from the moving patches' points: the cells"
+            << " touching them would take the whole motion (and fold as"
+            << " soon as it exceeds their size). Take supportRadius several"
+            << " times the largest displacement, and at least a few cells"
+            << " across (e.g. 5 movingExtent)"
+            << exit(FatalIOError);
+    }
 
     // The points finishDisplacement() can change, and the prescribed ones
     // (std::vector: GCC's alloc-size-larger-than on a boolList of nPoints)
@@ -244,7 +273,9 @@ void Foam::dcpRBFMotionSolver::initialise()
         << Switch(settings_.polynomial()) << ", " << projection_.dim()
         << "D, selection "
         << dcpRBFSelectionSettings::modeNames[settings_.selection().selection]
-        << "), " << region_.size() << " cells in reach" << endl;
+        << "), " << region_.size() << " cells in reach, "
+        << region_.nChecked() << " checked at every step (every cell whose"
+        << " points can move)" << endl;
 }
 
 
@@ -344,7 +375,7 @@ void Foam::dcpRBFMotionSolver::solve()
         r.waitEnded = waitEnded;
         // (before the guard: what a later step's mesh without swaps is
         // compared with, in endWaitIfWorse)
-        const scalar unguardedMin = r.minQuality;
+        const scalar unguardedMin = r.regionMin;
 
         // 5. Guard the quality
         guardQuality(d, r);
@@ -376,8 +407,16 @@ void Foam::dcpRBFMotionSolver::solve()
     }
     else
     {
-        // Nothing moves yet: every point but the moving ones stays put
+        // Nothing moves yet: every point but the moving ones stays put,
+        // unless a patch in neither list is moved by its own condition
         pointDisplacement_.primitiveFieldRef() = prescribed_;
+        if (selfMoved_.size())
+        {
+            constrain();
+            measureQuality(r);
+            guardQuality(d, r);
+            r.guardTime = timer.timeIncrement();
+        }
     }
 
     finishDisplacement();

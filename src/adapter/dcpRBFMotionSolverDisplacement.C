@@ -78,6 +78,17 @@ void Foam::dcpRBFMotionSolver::constrain()
         {
             bf[patchi].evaluate();
         }
+        else if (selfMoved_.found(patchi))
+        {
+            // a patch in neither list whose condition fixes its values
+            // (evaluated in readPrescribed()): in place before the mesh is
+            // measured, as the final constraints put it
+            bf[patchi].setInInternalField
+            (
+                pointDisplacement_.primitiveFieldRef(),
+                refCast<const valuePointPatchField<vector>>(bf[patchi])
+            );
+        }
         slipCorrection_.record(patchi, pointDisplacement_.primitiveField());
     }
     const pointConstraints& pcs = pointConstraints::New(pointDisplacement_.mesh());

@@ -90,7 +90,7 @@ bool Foam::dcpRBFMotionSolver::dynamicCouldHelp() const
 
 void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r)
 {
-    if (!lastQuality_.nInverted)
+    if (!r.nInverted)
     {
         invertedSteps_ = 0;
         return;
@@ -117,7 +117,7 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r)
         }
         WarningInFunction
             << "Time " << mesh().time().timeName() << ": "
-            << lastQuality_.nInverted << " inverted or degenerate cells"
+            << r.nInverted << " inverted or degenerate cells"
             << " (quality <= 0, minimum " << r.minQuality << "). The mesh is"
             << " invalid: "
             << (
@@ -135,6 +135,13 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r)
                    " the walls)"
                  : "reduce the motion per step, enlarge supportRadius"
                )
+            << (
+                   selfMoved_.size()
+                 ? ", list the patches moved by their own conditions ("
+                   + selfMovedNames() + ") under movingPatches (the cells"
+                   " next to them do not follow them)"
+                 : string()
+               ).c_str()
             << hint.c_str()
             << (
                    invertedSteps_ > 1

@@ -37,10 +37,11 @@ void Foam::dcpRBFMotionSolver::measureLastPoints(dcpRBFStepLog::record& r)
     pointsMeasured_ = true;
     measureRegion(lastPoints_);
     ++nMeasurements_;
-    r.nCells = lastQuality_.nCells;
-    r.nInverted = lastQuality_.nInverted;
-    r.minQuality = lastQuality_.minQuality;
-    r.meanQuality = lastQuality_.meanQuality;
+    r.nCells = lastQuality_.nChecked;
+    r.nInverted = lastQuality_.checkedInverted;
+    r.minQuality = lastQuality_.checkedMin;
+    r.meanQuality = lastQuality_.checkedMean;
+    r.regionMin = lastQuality_.minQuality;
 }
 
 
@@ -55,7 +56,7 @@ void Foam::dcpRBFMotionSolver::guardQuality
     {
         const dcpRBFQualityRegion::summary& q = lastQuality_;
 
-        if (q.minQuality >= floor || q.worst.empty())
+        if (q.checkedMin >= floor || !q.hasLowest)
         {
             shortfallSteps_ = 0;
             break;
@@ -64,7 +65,7 @@ void Foam::dcpRBFMotionSolver::guardQuality
         (
             iter >= settings_.guardIterations()
          || !controlPoints_.ready()
-         || !controlPoints_.addNear(q.worst[0])
+         || !controlPoints_.addNear(q.lowest)
         )
         {
             const word t(mesh().time().timeName());
@@ -72,16 +73,16 @@ void Foam::dcpRBFMotionSolver::guardQuality
             if (settings_.onFloorFailure() == dcpRBFSettings::floorAction::stop)
             {
                 FatalErrorInFunction
-                    << "Time " << t << ": minimum cell quality " << q.minQuality
+                    << "Time " << t << ": minimum cell quality " << q.checkedMin
                     << " below qualityFloor " << floor << " after " << iter
-                    << " guard additions" << why.c_str() << " (" << q.nInverted
+                    << " guard additions" << why.c_str() << " (" << q.checkedInverted
                     << " inverted cells). Stopping (qualityFloorAction stop)."
                     << exit(FatalError);
             }
             if (inFull(shortfallSteps_))
             {
                 WarningInFunction
-                    << "Time " << t << ": minimum cell quality " << q.minQuality
+                    << "Time " << t << ": minimum cell quality " << q.checkedMin
                     << " below qualityFloor " << floor << " after " << iter
                     << " guard additions" << why.c_str()
                     << "; continuing (qualityFloorAction warn; under a flow"

@@ -10,9 +10,190 @@ License
 #include "MortonOrder.hpp"
 #include "PointTree.hpp"
 #include "Pstream.H"
+#include "emptyPolyPatch.H"
+#include "processorPolyPatch.H"
 
 #include <algorithm>
 #include <limits>
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A cell's reference centre (the average of its points), core coordinates
+Foam::FixedList<Foam::scalar, 3> centreOf
+(
+    const Foam::labelListList& cellPoints,
+    const Foam::dcpRBFPlaneProjection& projection,
+    const Foam::pointField& points0,
+    const Foam::label celli
+)
+{
+    const Foam::labelList& cp = cellPoints[celli];
+    Foam::vector c(Foam::Zero);
+    for (const Foam::label pi : cp) c += points0[pi];
+    c /= cp.size();
+    Foam::FixedList<Foam::scalar, 3> x;
+    projection.toCore(c, x.data());
+    return x;
+}
+
+
+//- The cells in the order the flat scan visits them (Morton order of the
+//  first point of their first face, as dcprbf::CellQualityScan keys them):
+//  it then writes the qualities in sequence, not scattered
+Foam::labelList scanOrder
+(
+    const Foam::polyMesh& mesh,
+    const Foam::pointField& points0,
+    const std::vector<Foam::label>& cells
+)
+{
+    std::vector<double> key;
+    key.reserve(3*cells.size());
+    for (const Foam::label celli : cells)
+    {
+        const Foam::point& x = points0[mesh.faces()[mesh.cells()[celli][0]][0]];
+        key.insert(key.end(), {x.x(), x.y(), x.z()});
+    }
+    const std::vector<int> order(dcprbf::mortonOrder(key.data(), cells.size()));
+    Foam::labelList ordered(Foam::label(cells.size()));
+    forAll(ordered, i)
+    {
+        ordered[i] = cells[order[i]];
+    }
+    return ordered;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dcpRBFQualityRegion::findOuterCells
+(
+    const polyMesh& mesh,
+    const dcpRBFPlaneProjection& projection,
+    const pointField& points0,
+    const dcprbf::Points& sources,
+    const scalar radius,
+    const bool affineBeyond,
+    const std::vector<char>& inRegion
+)
+{
+    // Per point: can a kernel, a condition or a correction move it other
+    // than by the polynomial? (every point where that is not known)
+    std::vector<char> near(std::size_t(mesh.nPoints()), !affineBeyond);
+    if (affineBeyond && sources.rows() > 0)
+    {
+        const dcprbf::PointTree tree(sources);
+        #pragma omp parallel for schedule(dynamic, 4096)
+        for (label pointi = 0; pointi < mesh.nPoints(); ++pointi)
+        {
+            FixedList<scalar, 3> x;
+            projection.toCore(points0[pointi], x.data());
+            near[pointi] = tree.anyWithin(x.data(), radius);
+        }
+    }
+    const labelListList& cellPoints = mesh.cellPoints();
+    std::vector<label> outer;
+    label firstAffine = -1;
+    for (label celli = 0; celli < mesh.nCells(); ++celli)
+    {
+        if (inRegion[celli])
+        {
+            continue;
+        }
+        bool moves = false;
+        for (const label pi : cellPoints[celli])
+        {
+            if (near[pi])
+            {
+                moves = true;
+                break;
+            }
+        }
+        if (moves)
+        {
+            outer.push_back(celli);
+        }
+        else
+        {
+            if (firstAffine < 0) firstAffine = celli;
+            ++nAffine_;
+        }
+    }
+    outerCells_ = scanOrder(mesh, points0, outer);
+    if (nAffine_ > 0)
+    {
+        // last: the cell that stands for the nAffine_ moved affinely
+        outerCells_.append(firstAffine);
+    }
+    outerCentres_.setSize(outerCells_.size());
+    forAll(outerCells_, i)
+    {
+        outerCentres_[i] =
+            centreOf(cellPoints, projection, points0, outerCells_[i]);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+dcprbf::Points Foam::dcpRBFQualityRegion::checkSources
+(
+    const polyMesh& mesh,
+    const dcpRBFPlaneProjection& projection,
+    const pointField& points0,
+    const dcpRBFBoundaryPoints& boundaryPoints
+)
+{
+    // This processor's points of the other patches (not candidates)
+    std::vector<char> mark(std::size_t(mesh.nPoints()), false);
+    DynamicList<FixedList<scalar, 3>> local;
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (isA<emptyPolyPatch>(pp) || isA<processorPolyPatch>(pp))
+        {
+            continue;
+        }
+        for (const label pointi : pp.meshPoints())
+        {
+            if
+            (
+                !mark[pointi]
+             && boundaryPoints.kind(pointi) == dcpRBFBoundaryPoints::interiorPoint
+            )
+            {
+                mark[pointi] = true;
+                FixedList<scalar, 3> x;
+                projection.toCore(points0[pointi], x.data());
+                local.append(x);
+            }
+        }
+    }
+    List<List<FixedList<scalar, 3>>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()].transfer(local);
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+
+    const dcprbf::Points& candidates = boundaryPoints.points();
+    label n = candidates.rows();
+    for (const auto& l : all) n += l.size();
+    dcprbf::Points sources(n, 3);
+    sources.topRows(candidates.rows()) = candidates;
+    label row = candidates.rows();
+    for (const auto& l : all)
+    {
+        for (const auto& x : l)
+        {
+            sources.row(row++) << x[0], x[1], x[2];
+        }
+    }
+    return sources;
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -23,58 +204,55 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     const dcpRBFPlaneProjection& projection,
     const pointField& points0,
     const dcprbf::Points& movingPoints,
+    const dcprbf::Points& sources,
     const scalar radius,
+    const bool affineBeyond,
     const dcprbf::TetQuality::Metric metric
 )
 {
-    if (movingPoints.rows() == 0)
-    {
-        quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
-        return;
-    }
     // The cells whose reference centre (the average of their points) is
     // within radius of a moving point: found in parallel (the search
     // stops at the first point within reach)
-    const dcprbf::PointTree tree(movingPoints);
     const labelListList& cellPoints = mesh.cellPoints();
-    const auto centre = [&](const label celli)
+    std::vector<char> inside(std::size_t(mesh.nCells()), false);
+    if (movingPoints.rows() > 0)
     {
-        vector c(Zero);
-        for (const label pi : cellPoints[celli]) c += points0[pi];
-        c /= cellPoints[celli].size();
-        FixedList<scalar, 3> x;
-        projection.toCore(c, x.data());
-        return x;
-    };
-    std::vector<char> inside(mesh.nCells());
-    #pragma omp parallel for schedule(dynamic, 4096)
-    for (label celli = 0; celli < mesh.nCells(); ++celli)
-    {
-        inside[celli] = tree.anyWithin(centre(celli).data(), radius);
-    }
-    // In the order the flat scan visits them (Morton order of the first
-    // point of their first face, as dcprbf::CellQualityScan keys them): it
-    // then writes the qualities in sequence, not scattered
-    std::vector<label> found;
-    std::vector<double> key;
-    for (label celli = 0; celli < mesh.nCells(); ++celli)
-    {
-        if (inside[celli])
+        const dcprbf::PointTree tree(movingPoints);
+        #pragma omp parallel for schedule(dynamic, 4096)
+        for (label celli = 0; celli < mesh.nCells(); ++celli)
         {
-            found.push_back(celli);
-            const point& x = points0[mesh.faces()[mesh.cells()[celli][0]][0]];
-            key.insert(key.end(), {x.x(), x.y(), x.z()});
+            inside[celli] = tree.anyWithin
+            (
+                centreOf(cellPoints, projection, points0, celli).data(), radius
+            );
         }
     }
-    const std::vector<int> order(dcprbf::mortonOrder(key.data(), found.size()));
-    cells_.setSize(label(found.size()));
-    centres_.setSize(label(found.size()));
+    std::vector<label> found;
+    for (label celli = 0; celli < mesh.nCells(); ++celli)
+    {
+        if (inside[celli]) found.push_back(celli);
+    }
+    cells_ = scanOrder(mesh, points0, found);
+    centres_.setSize(cells_.size());
     forAll(cells_, i)
     {
-        cells_[i] = found[order[i]];
-        centres_[i] = centre(cells_[i]);
+        centres_[i] = centreOf(cellPoints, projection, points0, cells_[i]);
     }
     quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
+
+    findOuterCells
+    (
+        mesh, projection, points0, sources, radius, affineBeyond, inside
+    );
+    outerQuality_.reset
+    (
+        new dcpRBFCellQuality(mesh, outerCells_, points0, metric)
+    );
+    nChecked_ = returnReduce
+    (
+        cells_.size() + outerCells_.size() + max(nAffine_ - 1, label(0)),
+        sumOp<label>()
+    );
 }
 
 
@@ -162,6 +340,7 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     {
         label nInverted = 0;
         scalar least = GREAT, sum = 0;
+        label leastAt = -1;
         std::vector<label> lowestAt, highestAt;
     };
     constexpr label blockSize = 16384;
@@ -207,15 +386,28 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
         }
         b.sum = (sum[0] + sum[1]) + (sum[2] + sum[3]);
         b.least = min(min(least[0], least[1]), min(least[2], least[3]));
+        // the lowest cell (ties: the lower centre), where the least is
+        for (label i = bi*blockSize; i < i1; ++i)
+        {
+            if (!(q[i] > b.least) && (b.leastAt < 0 || lower(i, b.leastAt)))
+            {
+                b.leastAt = i;
+            }
+        }
     }
     label nInverted = 0;
     scalar least = GREAT, sum = 0;
+    label leastAt = -1;
     std::vector<label> lowestAt, highestAt;
     for (const block& b : blocks)
     {
         nInverted += b.nInverted;
         least = min(least, b.least);
         sum += b.sum;
+        if (b.leastAt >= 0 && (leastAt < 0 || lower(b.leastAt, leastAt)))
+        {
+            leastAt = b.leastAt;
+        }
         for (const label i : b.lowestAt) keep(lowestAt, i, lower);
         for (const label i : b.highestAt) keep(highestAt, i, higher);
     }
@@ -247,6 +439,38 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
 
     s.worst = List<rankedCell>(worst.begin(), worst.begin() + min(n, label(worst.size())));
     s.best = List<rankedCell>(best.begin(), best.begin() + min(n, label(best.size())));
+
+    // The check: the region and the other cells whose points can move
+    // (the last of them standing for nAffine_ if any moved affinely)
+    const scalarField qo(outerQuality_->compute(p));
+    label outerInverted = 0;
+    scalar outerSum = 0;
+    rankedCell lowestHere({GREAT, 0, 0, 0});
+    if (leastAt >= 0) lowestHere = ranked(leastAt);
+    forAll(qo, i)
+    {
+        const label weight =
+            (nAffine_ > 0 && i == qo.size() - 1) ? nAffine_ : 1;
+        outerInverted += weight*(qo[i] <= 0);
+        outerSum += weight*qo[i];
+        const rankedCell c
+        ({
+            qo[i], outerCentres_[i][0], outerCentres_[i][1], outerCentres_[i][2]
+        });
+        if (c < lowestHere) lowestHere = c;
+    }
+    s.nChecked = nChecked_;
+    s.checkedInverted = s.nInverted + returnReduce(outerInverted, sumOp<label>());
+    s.checkedMean =
+        s.nChecked
+      ? returnReduce(sum + outerSum, sumOp<scalar>())/s.nChecked : 1;
+    List<rankedCell> lowestAll(Pstream::nProcs());
+    lowestAll[Pstream::myProcNo()] = lowestHere;
+    Pstream::gatherList(lowestAll);
+    Pstream::scatterList(lowestAll);
+    s.lowest = *std::min_element(lowestAll.begin(), lowestAll.end());
+    s.hasLowest = s.lowest[0] < GREAT;
+    s.checkedMin = s.hasLowest ? s.lowest[0] : 1;
     s.quality.transfer(q);
     return s;
 }

@@ -11,6 +11,9 @@ License
 #include "dcpRBFVersion.H"
 #include "ThreadCount.hpp"
 #include "emptyPolyPatch.H"
+#include "processorPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
+#include "cyclicAMIPolyPatch.H"
 #include "wordRes.H"
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
@@ -148,6 +151,27 @@ void Foam::dcpRBFSettings::checkPatchLists
                 << "Patch " << patches[patchi].name() << " is matched by both"
                 << " movingPatches and staticPatches (by name, regular"
                 << " expression or group): a patch either moves or stays put"
+                << exit(FatalIOError);
+        }
+    }
+    // Patches whose two sides must move alike, listed or not: refused
+    // here, before anything is built from the boundary (cyclicAMI's
+    // coupled() is false: its geometry is not coupled, its fields are)
+    for (const polyPatch& pp : patches)
+    {
+        const bool periodic =
+            (pp.coupled() && !isA<processorPolyPatch>(pp))
+         || isA<processorCyclicPolyPatch>(pp);
+        if (periodic || isA<cyclicAMIPolyPatch>(pp))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Patch " << pp.name() << " is of type " << pp.type()
+                << ": dcpRBF does not move the points of coupled patches"
+                << " (cyclic, cyclicAMI, cyclicACMI, ...) consistently on"
+                << " both sides, listed or not. Use a mesh without coupled"
+                << " patches (e.g. a single region without sliding or"
+                << " periodic interfaces), or another motion solver"
+                << " (solidBody for a rotating zone)"
                 << exit(FatalIOError);
         }
     }

@@ -76,7 +76,7 @@ void Foam::dcpRBFStepLog::write(const record& r)
     }
     line<< (r.rescue ? ", rescue" : "") << "), quality min "
         << r.minQuality << " mean " << r.meanQuality << " (" << r.nCells
-        << " cells in reach";
+        << " cells checked";
     if (r.nInverted)
     {
         line<< ", " << r.nInverted << " inverted";

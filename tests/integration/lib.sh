@@ -42,11 +42,23 @@ reportsSetUp() {
         || fail "no set-up line for $1 in $2: $(grep -m1 'boundary points' log.moveDynamicMesh)"
 }
 
-# warningText START LINES WHY: the warning of log.moveDynamicMesh starting
-# with START (and its next LINES lines) on one line in the file warning;
-# fails with WHY when there is none
+# stoppedBelowFloor TEXT: moveDynamicMesh stops with the FatalError of
+# qualityFloorAction stop (not the warning of qualityFloorAction warn, which
+# has the same opening), whose message has TEXT
+stoppedBelowFloor() {
+    ! moveDynamicMesh > log.moveDynamicMesh 2>&1 || fail "moveDynamicMesh went on below the quality floor"
+    grep -A4 "FOAM FATAL ERROR" log.moveDynamicMesh | tr '\n' ' ' > fatal
+    [ -s fatal ] || fail "no FatalError: $(tail -n 5 log.moveDynamicMesh)"
+    grep -q "below qualityFloor .*Stopping (qualityFloorAction stop)" fatal \
+        || fail "the FatalError is not the floor's: $(head -c 400 fatal)"
+    grep -q -- "$1" fatal || fail "the FatalError does not say '$1': $(head -c 600 fatal)"
+}
+
+# warningText START LINES WHY [LOG]: the warning of LOG (default
+# log.moveDynamicMesh) starting with START (and its next LINES lines) on one
+# line in the file warning; fails with WHY when there is none
 warningText() {
-    grep -A"$2" "$1" log.moveDynamicMesh | tr '\n' ' ' > warning
+    grep -A"$2" "$1" "${4:-log.moveDynamicMesh}" | tr '\n' ' ' > warning
     [ -s warning ] || fail "$3"
 }
 

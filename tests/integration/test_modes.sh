@@ -89,18 +89,6 @@ test_dynamic2D_restartEqualsUninterrupted_parallel() {
     restartEqualsUninterrupted 2
 }
 
-# stoppedBelowFloor TEXT: moveDynamicMesh stops with the FatalError of
-# qualityFloorAction stop (not the warning of qualityFloorAction warn, which
-# has the same opening), whose message has TEXT
-stoppedBelowFloor() {
-    ! moveDynamicMesh > log.moveDynamicMesh 2>&1 || fail "moveDynamicMesh went on below the quality floor"
-    grep -A4 "FOAM FATAL ERROR" log.moveDynamicMesh | tr '\n' ' ' > fatal
-    [ -s fatal ] || fail "no FatalError: $(tail -n 5 log.moveDynamicMesh)"
-    grep -q "below qualityFloor .*Stopping (qualityFloorAction stop)" fatal \
-        || fail "the FatalError is not the floor's: $(head -c 400 fatal)"
-    grep -q -- "$1" fatal || fail "the FatalError does not say '$1': $(head -c 600 fatal)"
-}
-
 test_qualityFloorStop_fatalErrorWhenUnmet() {
     modeRun3D "selection all;" || return 1
     dynamicMeshDict "$(cubeCoeffs "selection all;") qualityFloor 0.99; qualityFloorAction stop;"

@@ -106,10 +106,37 @@ test_badFunction_fatalIOErrorFromTheUtility() {
     grep -q "WendlandC2" log.moveDynamicMesh || fail "error does not list the allowed functions"
 }
 
+# A patch in neither list: one whose condition follows the interpolation
+# (slip) is said to do so; one whose condition fixes its values is said to
+# move by them, with what to do (the two warnings apart)
+# outerCondition TYPE_AND_VALUE: the hollow cube's body fixed, outer with this condition
+outerCondition() {
+    writeFile 0/pointDisplacement pointVectorField <<EOT
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField { body { type fixedValue; value uniform (0 0 0); } outer { $1 } }
+EOT
+}
+
 test_unlistedPatch_warns() {
-    staticHollowCube || return 1
+    staticHollowCube
     dynamicMeshDict "movingPatches (body); staticPatches (); supportRadius 1;"
     foamDictionary system/controlDict -entry endTime -set 0.1 > /dev/null
-    run moveDynamicMesh || return 1
-    grep -q "neither movingPatches nor staticPatches" log.moveDynamicMesh || fail "no warning for patch outer"
+    mkdir fixed
+    cp -r constant system fixed/
+    outerCondition "type slip;"
+    run moveDynamicMesh
+    warningText "Patches in neither movingPatches nor staticPatches: " 2 "no warning for the slip patch outer"
+    grep -q "1(outer) *Their points move with the interpolated displacement" warning \
+        || fail "the slip patch's warning does not name outer or say what happens: $(head -c 300 warning)"
+    ! grep -q "whose pointDisplacement condition fixes" log.moveDynamicMesh \
+        || fail "the slip patch is said to be moved by its own condition"
+
+    cd fixed
+    outerCondition "type fixedValue; value uniform (0 0 0);"
+    run moveDynamicMesh
+    warningText "whose pointDisplacement condition fixes their points' values" 3 \
+        "no warning for the fixed-value patch outer"
+    grep -q "values: outer .*List a patch that moves under movingPatches, one that stays put under staticPatches" warning \
+        || fail "the fixed-value patch's warning does not name outer or say what to do: $(head -c 400 warning)"
 }
