@@ -132,7 +132,7 @@ test_unlistedPatch_warns() {
     ! grep -q "whose pointDisplacement condition fixes" log.moveDynamicMesh \
         || fail "the slip patch is said to be moved by its own condition"
 
-    cd fixed
+    cd fixed || fail "no folder fixed"
     outerCondition "type fixedValue; value uniform (0 0 0);"
     run moveDynamicMesh
     warningText "whose pointDisplacement condition fixes their points' values" 3 \
