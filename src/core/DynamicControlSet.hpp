@@ -114,7 +114,10 @@ public:
     void restore(const State& s);
 
     //- Leave-one-out errors at the centres (rows in the solver's order) of
-    //  the interpolant of these candidate values. O(N^3/3).
+    //  the interpolant of these candidate values. O(N^3/3). A centre the
+    //  polynomial needs (B_jj = 0: without it the polynomial is no longer
+    //  determined, e.g. one of dim+1 centres) has an infinite error: it
+    //  cannot leave (no division by zero)
     Values leaveOneOutErrors(const Values& candidateValues) const;
 
     //- Among the k (at most maxTries) non-member candidates nearest to x,
@@ -130,7 +133,8 @@ public:
     ) const;
 
     //- Candidate indices of the removable, old-enough centres, ascending
-    //  |leave-one-out error| (rows in the solver's order)
+    //  |leave-one-out error| (rows in the solver's order); those of an
+    //  infinite error (the polynomial needs them) are not among them
     std::vector<Eigen::Index> removalOrder(const Values& looErrors) const;
 
     //- Candidate in joins and control point out (candidate index) leaves in

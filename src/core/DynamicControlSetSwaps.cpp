@@ -5,6 +5,8 @@
 #include "DynamicControlSet.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace dcprbf
@@ -52,7 +54,24 @@ Values DynamicControlSet::leaveOneOutErrors(const Values& candidateValues) const
     Eigen::MatrixX3d beta;
     solver_.solve(v, alpha, beta);
     const Eigen::VectorXd& b = solver_.factorization().inverseDiagonal();
-    return alpha.array().colwise()/b.array();
+    // B_jj vanishes (to round-off) for a centre the polynomial needs: for
+    // every centre where there are no more of them than the polynomial's
+    // terms (B = 0), else where it is round-off of the largest
+    const bool allNeeded = b.size() <= Eigen::Index(solver_.polynomial().size());
+    const double tiny = 1e-10*(b.size() ? b.cwiseAbs().maxCoeff() : 0.0);
+    Values errors(alpha.rows(), 3);
+    for (Eigen::Index k = 0; k < alpha.rows(); ++k)
+    {
+        if (!allNeeded && std::abs(b(k)) > tiny)
+        {
+            errors.row(k) = alpha.row(k)/b(k);
+        }
+        else
+        {
+            errors.row(k).setConstant(std::numeric_limits<double>::infinity());
+        }
+    }
+    return errors;
 }
 
 
@@ -99,7 +118,11 @@ std::vector<Eigen::Index> DynamicControlSet::removalOrder(const Values& looError
     std::vector<std::pair<double, Eigen::Index>> order;
     for (std::size_t k = 0; k < indices_.size(); ++k)
     {
-        if (removable_[indices_[k]] && age_[k] >= options_.protectSteps)
+        if
+        (
+            removable_[indices_[k]] && age_[k] >= options_.protectSteps
+         && std::isfinite(looErrors(Eigen::Index(k), 0))
+        )
         {
             order.emplace_back(looErrors.row(k).norm(), indices_[k]);
         }

@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cfenv>
+#include <cmath>
 
 using namespace dcprbf;
 using test::randomPoints;
@@ -228,6 +230,56 @@ TEST_F(SwapFixture, RemovalOrderSkipsProtectedAndFixedPoints)
     EXPECT_EQ(std::count(order.begin(), order.end(), 0), 0);
     EXPECT_EQ(std::count(order.begin(), order.end(), 1), 0);
     EXPECT_EQ(Index(order.size()), s.size() - 2);
+}
+
+// dim+1 centres (the fewest the linear polynomial takes: a legal maxPoints)
+// each needed by the polynomial: B_jj = 0. Their leave-one-out errors are
+// infinite without dividing by zero (traps on, as OpenFOAM's FOAM_SIGFPE
+// sets them: a division by zero would end the test with SIGFPE), none is a
+// leaving candidate; with one centre more, every centre is (finite errors)
+TEST(LeaveOneOut, CentresThePolynomialNeedsCannotLeave)
+{
+    for (const int dim : {2, 3})
+    {
+        const Points cand = randomPoints(40, dim, 5);
+        const Values v = fieldFor(cand, dim);
+        const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.8);
+        DynamicControlSet::Options o;
+        o.protectSteps = 0;
+        for (const Index n : {Index(dim + 1), Index(dim + 2)})
+        {
+            DynamicControlSet s = makeSet(cand, k, true, dim, o);
+            std::vector<Index> idx;
+            for (Index i = 0; i < n; ++i) idx.push_back(4*i);
+            s.reset(idx);
+            s.solve(v);
+            #ifdef FE_DIVBYZERO
+            const int traps = FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW;
+            std::feclearexcept(FE_ALL_EXCEPT);
+            const int before = fegetexcept();
+            feenableexcept(traps);
+            #endif
+            const Values loo = s.leaveOneOutErrors(v);
+            const std::vector<Index> order = s.removalOrder(loo);
+            #ifdef FE_DIVBYZERO
+            fedisableexcept(traps & ~before);
+            #endif
+            ASSERT_EQ(loo.rows(), n);
+            if (n == dim + 1)
+            {
+                for (Index j = 0; j < n; ++j)
+                {
+                    EXPECT_TRUE(std::isinf(loo(j, 0))) << dim << "D, centre " << j;
+                }
+                EXPECT_TRUE(order.empty()) << dim << "D: " << order.size() << " could leave";
+            }
+            else
+            {
+                EXPECT_TRUE(loo.allFinite()) << dim << "D";
+                EXPECT_EQ(Index(order.size()), n) << dim << "D";
+            }
+        }
+    }
 }
 
 TEST_F(SwapFixture, RestoreUndoesATrialSwap)

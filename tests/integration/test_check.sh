@@ -47,9 +47,9 @@ EOT
     dynamicMeshDict "movingPatches (bump); staticPatches (bottom inlet outlet); $2"
 }
 
-# invertedWhereCheckMeshFails: at every written time, dcpRBF's step row
-# (dcpRBF.dat, column nInverted) reports inverted cells exactly where
-# checkMesh finds the mesh invalid, and it does somewhere
+# invertedWhereCheckMeshFails [any]: at every written time, dcpRBF's step
+# row (dcpRBF.dat, column nInverted) reports inverted cells exactly where
+# checkMesh finds the mesh invalid, and it does somewhere (any: or nowhere)
 invertedWhereCheckMeshFails() {
     local t nBad=0 inverted ok
     run checkMesh -noZero -noTopology
@@ -67,7 +67,7 @@ invertedWhereCheckMeshFails() {
             nBad=$((nBad + 1))
         fi
     done
-    [ "$nBad" -gt 0 ] || fail "checkMesh never fails: the case does not test the check"
+    [ "$nBad" -gt 0 ] || [ "${1:-}" = any ] || fail "checkMesh never fails: the case does not test the check"
     echo "inverted cells reported at the $nBad times checkMesh fails, at no other"
 }
 

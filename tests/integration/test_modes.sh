@@ -134,3 +134,30 @@ test_qualityFloorStop_atMaxPointsNamesIt() {
     dynamicMeshDict "$(cubeCoeffs "selection greedy; tolerance 1e-12; minPoints 8; maxPoints 8; reselectTolerance 1e9;") qualityFloor 0.99; qualityFloorAction stop;"
     stoppedBelowFloor "after 0 guard additions (the set is at maxPoints 8: no point can join; raise maxPoints)"
 }
+
+# The fewest control points the polynomial takes (maxPoints dim+1, legal):
+# every centre is needed by it, none can leave, so no trial swap is made
+# (a leave-one-out error divided by zero crashed the run: SIGFPE); the run
+# ends, inverted cells reported where checkMesh finds them
+test_dynamic_fewestPointsThePolynomialTakes_noCrash() {
+    local d
+    for d in 2 3
+    do
+        mkdir -p "$d"D
+        (
+            cd "$d"D || exit 1
+            if [ "$d" = 2 ]
+            then
+                modeRun2D "selection dynamic; maxPoints 3;"
+            else
+                modeRun3D "selection dynamic; maxPoints 4;"
+            fi
+            run moveDynamicMesh
+            tail -n 3 log.moveDynamicMesh | grep -q '^End' || fail "${d}D: did not end"
+            awk '!/^#/ && $2 != '"$((d + 1))"' { bad = 1 } END { exit bad }' postProcessing/dcpRBF/0/dcpRBF.dat \
+                || fail "${d}D: not $((d + 1)) control points at every step"
+            ! grep -q "trial swap" log.moveDynamicMesh || fail "${d}D: a trial swap with no removable point"
+            invertedWhereCheckMeshFails any
+        ) || fail "${d}D failed: $(tail -n 3 "$d"D/log.moveDynamicMesh)"
+    done
+}

@@ -114,3 +114,48 @@ test_airfoil2D_restartEveryMode_serial() {
 test_cube3D_restartEveryMode_parallel() {
     restartEveryMode 2 modeRun3D
 }
+
+# restartWith COEFFS: the run to t = 0.5, restarted to 1 with dcpRBFCoeffs
+# COEFFS; its log is log.moveDynamicMesh.1
+restartWith() {
+    foamDictionary system/controlDict -entry endTime -set 0.5 > /dev/null
+    run moveDynamicMesh
+    [ -f 0.5/uniform/dcpRBFState ] || fail "no restart state at t = 0.5"
+    foamDictionary system/controlDict -entry endTime -set 1 > /dev/null
+    dynamicMeshDict "$1"
+    run moveDynamicMesh
+}
+
+# A restart whose settings differ from the state's selects anew, saying so
+# (a new user's run restarted with selection all kept the old 65 points)
+test_restart_otherSelection_selectsAnewSaysSo() {
+    modeRun2D "selection greedy; tolerance 1e-2;"
+    restartWith "$(airfoilCoeffs "selection all;")"
+    warningText "was selected with other settings" 2 "no warning of the changed settings" log.moveDynamicMesh.1
+    grep -q "selection greedy -> all" warning || fail "the warning does not say what changed: $(head -c 400 warning)"
+    # every boundary point a control point after the restart
+    local n
+    n=$(sed -n 's/^dcpRBF: \([0-9]*\) boundary points.*/\1/p' log.moveDynamicMesh.1)
+    grep -q "^dcpRBF: control points $n " log.moveDynamicMesh.1 \
+        || fail "not all $n boundary points control points after the restart: $(grep -m1 '^dcpRBF: control points' log.moveDynamicMesh.1)"
+    ! grep -q "restarting with" log.moveDynamicMesh.1 || fail "the old control set was read"
+}
+
+test_restart_otherMaxPoints_selectsAnewSaysSo() {
+    modeRun2D "selection greedy; tolerance 1e-6;"
+    restartWith "$(airfoilCoeffs "selection greedy; tolerance 1e-6; maxPoints 12;")"
+    warningText "was selected with other settings" 2 "no warning of the changed settings" log.moveDynamicMesh.1
+    grep -q "maxPoints 2000 -> 12" warning || fail "the warning does not say what changed: $(head -c 400 warning)"
+    awk '!/^#/ && $1 > 0.5 && $2 > 12 { bad = 1 } END { exit bad }' postProcessing/dcpRBF/0.5/dcpRBF.dat \
+        || fail "more than maxPoints 12 control points after the restart"
+}
+
+# Other patches (a static patch left out): no index error, selected anew
+test_restart_otherPatches_selectsAnewSaysSo() {
+    modeRun2D "selection greedy; tolerance 1e-2;"
+    restartWith "movingPatches (wing); staticPatches (inlet outlet); supportRadius 4; qualityFloor 0.1; controlPoints { selection greedy; tolerance 1e-2; }"
+    warningText "was selected with other settings" 2 "no warning of the changed settings" log.moveDynamicMesh.1
+    grep -q "staticPatches (inlet outlet topAndBottom) -> (inlet outlet)" warning \
+        || fail "the warning does not say what changed: $(head -c 400 warning)"
+    tail -n 3 log.moveDynamicMesh.1 | grep -q '^End' || fail "the restarted run did not end"
+}
