@@ -125,6 +125,30 @@ meshOkAtEveryTime() {
     [ "$nOk" -eq "$nTimes" ] || fail "checkMesh: $nOk of $nTimes times OK: $(grep -m3 'Failed\|\*\*\*' log.checkMesh)"
 }
 
+# invertedWhereCheckMeshFails [any]: at every written time, dcpRBF's step
+# row (dcpRBF.dat, column nInverted) reports inverted cells exactly where
+# checkMesh finds the mesh invalid, and it does somewhere (any: or nowhere)
+invertedWhereCheckMeshFails() {
+    local t nBad=0 inverted ok
+    run checkMesh -noZero -noTopology
+    for t in $(writtenTimes .)
+    do
+        inverted=$(awk -v t="$t" '!/^#/ && $1 == t { print $17 }' postProcessing/dcpRBF/0/dcpRBF.dat)
+        [ -n "$inverted" ] || fail "no dcpRBF.dat row at t = $t"
+        # checkMesh's verdict at t: the line after "Time = t" up to the next
+        ok=$(awk -v t="$t" '/^Time = / { cur = ($3 == t) } cur && /^Mesh OK/ { print "ok" }' log.checkMesh)
+        if [ "$ok" = ok ]
+        then
+            [ "$inverted" -eq 0 ] || fail "t = $t: dcpRBF reports $inverted inverted cells, checkMesh none"
+        else
+            [ "$inverted" -gt 0 ] || fail "t = $t: checkMesh fails, dcpRBF reports no inverted cell"
+            nBad=$((nBad + 1))
+        fi
+    done
+    [ "$nBad" -gt 0 ] || [ "${1:-}" = any ] || fail "checkMesh never fails: the case does not test the check"
+    echo "inverted cells reported at the $nBad times checkMesh fails, at no other"
+}
+
 # pythonWithGmsh: a python that imports gmsh
 pythonWithGmsh() {
     local py
