@@ -65,6 +65,18 @@ void Foam::dcpRBFControlPoints::greedy(const dcprbf::Values& d)
         << boundary_.size() << " boundary points, relative error "
         << r.historyError.back() << (r.converged ? "" : " (tolerance not met)")
         << endl;
+    if (r.dependent)
+    {
+        WarningInFunction
+            << "The greedy selection stopped at " << r.selected.size()
+            << " points, relative error " << r.historyError.back()
+            << " (tolerance " << s.tolerance << "): the next point is"
+            << " numerically dependent on those selected (the kernel matrix"
+            << " singular to round-off with it). supportRadius "
+            << settings_.kernel().radius() << " is large against the"
+            << " spacing of the boundary points: a smaller supportRadius lets"
+            << " the set fit the boundary better" << endl;
+    }
     // The greedy's factorization is taken over (same candidates, frame and
     // kernel): no O(N^3) refactorization
     set_.reset(r.selected, std::move(*r.factorization));
@@ -315,8 +327,56 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
         FatalErrorInFunction
             << "Cannot build the RBF system on the " << boundary_.size()
             << " boundary points of movingPatches and staticPatches: "
-            << e.what() << exit(FatalError);
+            << e.what() << nl << "    " << whatToDo(e).c_str()
+            << exit(FatalError);
     }
+}
+
+
+Foam::string Foam::dcpRBFControlPoints::whatToDo(const dcprbf::Error& e) const
+{
+    const std::string what(e.what());
+    const dcprbf::RadialKernel& k = settings_.kernel();
+    const string radius(" (supportRadius " + Foam::name(k.radius()) + ")");
+    if
+    (
+        what.find("not positive definite") != std::string::npos
+     || what.find("numerically dependent") != std::string::npos
+    )
+    {
+        if (!k.compact())
+        {
+            return
+                "function " + k.name() + " is global: supportRadius is its"
+                " shape length" + radius + ", and its matrix is singular to"
+                " round-off when that is large against the spacing of the"
+                " boundary points. Take supportRadius of a few spacings of"
+                " the boundary points, or a compactly supported function"
+                " (function WendlandC2; supportRadius several times the"
+                " largest displacement)";
+        }
+        return
+            "the kernel matrix is singular to round-off: supportRadius"
+          + radius + " is very large against the spacing of the boundary"
+            " points (take selection greedy, which selects the points the"
+            " interpolant needs, or a smaller supportRadius), or two"
+            " boundary points of movingPatches and staticPatches coincide"
+            " (a patch listed twice under other names or groups, or the two"
+            " sides of an interface: list each once)";
+    }
+    if
+    (
+        what.find("collinear") != std::string::npos
+     || what.find("coplanar") != std::string::npos
+    )
+    {
+        return
+            "the candidates are the points of movingPatches and"
+            " staticPatches; with the polynomial they must span the space"
+            " (not all on one line in 2D, not all in one plane in 3D): add a"
+            " patch off that plane to staticPatches, or set polynomial false";
+    }
+    return "check movingPatches, staticPatches and controlPoints";
 }
 
 
@@ -341,11 +401,7 @@ bool Foam::dcpRBFControlPoints::select(const dcprbf::Values& d)
     {
         FatalErrorInFunction
             << "Greedy selection failed: " << e.what() << nl
-            << "    The candidates are the points of movingPatches and"
-            << " staticPatches. With the polynomial they must span the space"
-            << " (not all on one line in 2D, not all in one plane in 3D): add"
-            << " a patch off that plane to staticPatches, or set polynomial"
-            << " false" << exit(FatalError);
+            << "    " << whatToDo(e).c_str() << exit(FatalError);
     }
     ready_ = true;
     return true;
@@ -370,7 +426,8 @@ void Foam::dcpRBFControlPoints::solve(const dcprbf::Values& d)
     catch (const dcprbf::Error& e)
     {
         FatalErrorInFunction
-            << "RBF solve failed: " << e.what() << exit(FatalError);
+            << "RBF solve failed: " << e.what() << nl
+            << "    " << whatToDo(e).c_str() << exit(FatalError);
     }
 }
 

@@ -8,6 +8,8 @@ License
 
 #include "dcpRBFDictReader.H"
 #include "Switch.H"
+#include "wordRes.H"
+#include "OStringStream.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -15,6 +17,53 @@ Foam::dcpRBFDictReader::dcpRBFDictReader(const dictionary& dict)
 :
     dict_(dict)
 {}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::ITstream* Foam::dcpRBFDictReader::tokens
+(
+    const word& keyword,
+    const string& expected
+) const
+{
+    const entry* e = dict_.findEntry(keyword, keyType::LITERAL);
+    if (!e)
+    {
+        return nullptr;
+    }
+    if (e->isDict())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " must be " << expected.c_str()
+            << "; got a sub-dictionary" << exit(FatalIOError);
+    }
+    ITstream& is = e->stream();
+    is.rewind();
+    return &is;
+}
+
+
+const Foam::token* Foam::dcpRBFDictReader::single
+(
+    const word& keyword,
+    const string& expected
+) const
+{
+    ITstream* is = tokens(keyword, expected);
+    if (!is)
+    {
+        return nullptr;
+    }
+    if (is->size() != 1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " must be " << expected.c_str()
+            << "; got " << is->size() << " tokens: " << *is
+            << exit(FatalIOError);
+    }
+    return &(*is)[0];
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -45,12 +94,12 @@ bool Foam::dcpRBFDictReader::getSwitch
     const bool deflt
 ) const
 {
-    const entry* e = dict_.findEntry(keyword, keyType::LITERAL);
-    if (!e)
+    const token* tp = single(keyword, "a switch (true/false, on/off, yes/no)");
+    if (!tp)
     {
         return deflt;
     }
-    const token t(e->stream());
+    const token& t = *tp;
     const Switch sw
     (
         t.isWord() ? Switch(t.wordToken(), true) : Switch(Switch::INVALID)
@@ -73,7 +122,14 @@ Foam::label Foam::dcpRBFDictReader::getChoice
     const word& deflt
 ) const
 {
-    const word w(dict_.getOrDefault<word>(keyword, deflt));
+    const token* t = single(keyword, "one of " + Foam::name(allowed.size()) + " words");
+    if (t && !t->isWord())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " must be a word; got " << *t
+            << ". Allowed values: " << allowed << exit(FatalIOError);
+    }
+    const word w(t ? t->wordToken() : deflt);
     const label i = allowed.find(w);
     if (i < 0)
     {
@@ -90,15 +146,28 @@ Foam::scalar Foam::dcpRBFDictReader::getScalar
     const word& keyword,
     const scalar deflt,
     const scalar lo,
-    const scalar hi
+    const scalar hi,
+    const bool lowIncluded
 ) const
 {
-    const scalar x(dict_.getOrDefault<scalar>(keyword, deflt));
-    if (!(x > lo && x <= hi))
+    const string range
+    (
+        "a number in " + string(lowIncluded ? "[" : "(") + Foam::name(lo)
+      + ", " + Foam::name(hi) + "]"
+    );
+    const token* t = single(keyword, range);
+    if (t && !t->isNumber())
     {
         FatalIOErrorInFunction(dict_)
-            << "Keyword " << keyword << " must be in (" << lo << ", " << hi
-            << "], got " << x << exit(FatalIOError);
+            << "Keyword " << keyword << " must be " << range.c_str()
+            << "; got " << *t << exit(FatalIOError);
+    }
+    const scalar x(t ? t->number() : deflt);
+    if (!((x > lo || (lowIncluded && x == lo)) && x <= hi))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " must be " << range.c_str()
+            << ", got " << x << exit(FatalIOError);
     }
     return x;
 }
@@ -112,14 +181,90 @@ Foam::label Foam::dcpRBFDictReader::getLabel
     const label hi
 ) const
 {
-    const label n(dict_.getOrDefault<label>(keyword, deflt));
+    const string range("a whole number in [" + Foam::name(lo) + ", " + Foam::name(hi) + "]");
+    const token* t = single(keyword, range);
+    if (t && !t->isLabel())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " must be " << range.c_str()
+            << "; got " << *t << exit(FatalIOError);
+    }
+    const label n(t ? t->labelToken() : deflt);
     if (n < lo || n > hi)
     {
         FatalIOErrorInFunction(dict_)
-            << "Keyword " << keyword << " must be in [" << lo << ", " << hi
-            << "], got " << n << exit(FatalIOError);
+            << "Keyword " << keyword << " must be " << range.c_str()
+            << ", got " << n << exit(FatalIOError);
     }
     return n;
+}
+
+
+Foam::wordRes Foam::dcpRBFDictReader::getWordRes
+(
+    const word& keyword,
+    const bool allowEmpty
+) const
+{
+    const string expected
+    (
+        "a list of patch names, regular expressions or groups, e.g. "
+      + keyword + " (wing \"flap.*\")"
+    );
+    ITstream* is = tokens(keyword, expected);
+    if (!is)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " missing: " << expected.c_str()
+            << exit(FatalIOError);
+    }
+    // ( word|string ... ), or N( ... ): anything else is not such a list
+    label k = 0;
+    if (is->size() && (*is)[0].isLabel()) ++k;
+    bool ok = is->size() >= k + 2 && (*is)[k] == token::BEGIN_LIST
+        && (*is)[is->size() - 1] == token::END_LIST;
+    for (label i = k + 1; ok && i < is->size() - 1; ++i)
+    {
+        ok = (*is)[i].isWord() || (*is)[i].isString();
+    }
+    if (!ok)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " must be " << expected.c_str()
+            << "; got " << *is << exit(FatalIOError);
+    }
+    is->rewind();
+    const wordRes matchers(*is);
+    if (matchers.empty() && !allowEmpty)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " is an empty list: " << expected.c_str()
+            << exit(FatalIOError);
+    }
+    return matchers;
+}
+
+
+Foam::point Foam::dcpRBFDictReader::getPoint(const word& keyword) const
+{
+    const string expected("a point (x y z), e.g. " + keyword + " (0.25 0 0)");
+    ITstream* is = tokens(keyword, expected);
+    bool ok =
+        is && is->size() == 5 && (*is)[0] == token::BEGIN_LIST
+     && (*is)[4] == token::END_LIST;
+    for (label i = 1; ok && i < 4; ++i)
+    {
+        ok = (*is)[i].isNumber();
+    }
+    if (!ok)
+    {
+        OStringStream got;
+        if (is) got << *is; else got << "nothing";
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " must be " << expected.c_str()
+            << "; got " << got.str().c_str() << exit(FatalIOError);
+    }
+    return point((*is)[1].number(), (*is)[2].number(), (*is)[3].number());
 }
 
 

@@ -130,6 +130,35 @@ void Foam::dcpRBFMotionSolver::checkPatches()
 }
 
 
+void Foam::dcpRBFMotionSolver::checkSetSize() const
+{
+    const dcpRBFSelectionSettings& sel = settings_.selection();
+    if (sel.selection == dcpRBFSelectionSettings::mode::all)
+    {
+        return;
+    }
+    const dictionary& dict = coeffDict().subDict("controlPoints");
+    const label fewest = settings_.polynomial() ? projection_.dim() + 1 : 1;
+    if (sel.maxPoints < fewest)
+    {
+        FatalIOErrorInFunction(dict)
+            << "maxPoints " << sel.maxPoints << " is below the "
+            << fewest << " control points the linear polynomial needs in "
+            << projection_.dim() << "D: take maxPoints " << fewest
+            << " or more (or polynomial false)" << exit(FatalIOError);
+    }
+    if (sel.minPoints > boundaryPoints_.size())
+    {
+        FatalIOErrorInFunction(dict)
+            << "minPoints " << sel.minPoints << " is above the "
+            << boundaryPoints_.size() << " boundary points of movingPatches"
+            << " and staticPatches (the candidate control points): take"
+            << " minPoints " << boundaryPoints_.size() << " or fewer"
+            << " (selection all takes every one)" << exit(FatalIOError);
+    }
+}
+
+
 void Foam::dcpRBFMotionSolver::setThreads() const
 {
     // MPI ranks x OpenMP threads beyond the cores slows everything down
@@ -158,6 +187,15 @@ void Foam::dcpRBFMotionSolver::setThreads() const
         << (fromEnv ? ")" : "; set OMP_NUM_THREADS to change)") << endl;
     #endif
     // the quality kernels' build (the same values on any)
+    const string cap(getEnv("DCPRBF_SIMD_WIDTH"));
+    if (!cap.empty() && cap.find_first_not_of("0123456789") != std::string::npos)
+    {
+        FatalErrorInFunction
+            << "The environment variable DCPRBF_SIMD_WIDTH is " << cap
+            << ": not a width in bits. Allowed: a whole number, e.g. 256"
+            << " (at most AVX2) or 128 (no AVX); unset: the widest the"
+            << " processor has" << exit(FatalError);
+    }
     const unsigned width = dcprbf::TetBatch::width();
     Info<< typeName << ": quality kernels in "
         << (width >= 512 ? "AVX-512" : width >= 256 ? "AVX2" : "default")
@@ -208,6 +246,7 @@ void Foam::dcpRBFMotionSolver::initialise()
 {
     setThreads();
     checkPatches();
+    checkSetSize();
     if (region_.size() == 0)
     {
         FatalIOErrorInFunction(coeffDict())

@@ -20,19 +20,18 @@ Foam::string Foam::dcpRBFMotionSolver::guardShortfall(const label iter) const
     const label nCandidates = controlPoints_.candidates().rows();
     const string full
     (
-        string
-        (
-            " (every boundary point is a control point: more cannot"
-            " help. The interpolation is exact at the boundary, so the"
-            " cells are squashed between the moving and the static"
-            " patches"
-        )
+        string(" (every boundary point is a control point: more cannot help. ")
       + (
             settings_.kernel().compact()
-          ? " by the displacement's decay within supportRadius (about"
-            " 2 times the displacement over it for WendlandC2): raise"
-            " supportRadius"
-          : ": try another supportRadius or function"
+          ? "The cells are squashed between the moving and the static"
+            " patches by the displacement's decay within supportRadius"
+            " (about 2 times the displacement over it for WendlandC2):"
+            " raise supportRadius"
+          : "function " + settings_.kernel().name() + " is global and"
+            " supportRadius its shape length: the interpolant is exact at"
+            " the boundary points and may swing between them when the"
+            " radius is unfit for their spacing: take supportRadius of a"
+            " few spacings, or function WendlandC2"
         )
       + (
             slipCorrection_.active()

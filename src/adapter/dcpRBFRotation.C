@@ -98,15 +98,8 @@ Foam::dcpRBFRotation::dcpRBFRotation
     r.checkKeywords({"bodies", "centre", "blendProfile", "blendSlope", "blendRamp"});
     readBodies(mesh, dict, settings);
     profile_ = r.getEnum("blendProfile", blendProfileNames, blendProfile::star);
-    slope_ = dict.getOrDefault<scalar>("blendSlope", 0.25);
-    ramp_ = dict.getOrDefault<scalar>("blendRamp", 0.1);
-    if (!(slope_ >= 0 && slope_ <= 10) || !(ramp_ >= 0 && ramp_ <= 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword " << (slope_ >= 0 && slope_ <= 10 ? "blendRamp" : "blendSlope")
-            << " out of range: blendSlope " << slope_ << " (allowed [0, 10]),"
-            << " blendRamp " << ramp_ << " (allowed [0, 1])" << exit(FatalIOError);
-    }
+    slope_ = r.getScalar("blendSlope", 0.25, 0, 10, true);
+    ramp_ = r.getScalar("blendRamp", 0.1, 0, 1, true);
     if (profile_ != blendProfile::star)
     {
         for (const word k : {"blendSlope", "blendRamp"})

@@ -61,7 +61,8 @@ void Foam::dcpRBFRotation::readBodies
             (
                 dcpRBFSettings::matchPatches
                 (
-                    e.dict(), "patches", e.dict().get<wordRes>("patches"), patches
+                    e.dict(), "patches",
+                    dcpRBFDictReader(e.dict()).getWordRes("patches", false), patches
                 )
             );
             bodyNames_.append(e.keyword());
@@ -178,7 +179,11 @@ void Foam::dcpRBFRotation::readBodies
         }
         if (bodyDicts[b]->found("centre"))
         {
-            projection_.toCore(bodyDicts[b]->get<point>("centre"), centres_[b].data());
+            projection_.toCore
+            (
+                dcpRBFDictReader(*bodyDicts[b]).getPoint("centre"),
+                centres_[b].data()
+            );
             Eigen::Vector3d lo(Eigen::Vector3d::Constant(GREAT)), hi(-lo);
             for (const Eigen::Index i : bodyPoints_[b])
             {

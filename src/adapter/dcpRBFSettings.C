@@ -85,14 +85,7 @@ Foam::labelList Foam::dcpRBFSettings::readPatches
     const bool allowEmpty
 )
 {
-    const wordRes matchers(dict.get<wordRes>(keyword));
-    if (matchers.empty() && !allowEmpty)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword " << keyword << " is an empty list. Allowed: patch"
-            << " names, regular expressions or groups among "
-            << patches.names() << exit(FatalIOError);
-    }
+    const wordRes matchers(dcpRBFDictReader(dict).getWordRes(keyword, allowEmpty));
     return matchPatches(dict, keyword, matchers, patches);
 }
 
@@ -203,6 +196,12 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
 ) const
 {
     ITstream& is = dict.lookup("supportRadius");
+    if (is.empty() || !is[0].isNumber())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword supportRadius must be a length [m] or \"factor"
+            << " movingExtent\"; got " << is << exit(FatalIOError);
+    }
     const scalar factor(readScalar(is));
     scalar radius = factor;
     if (!is.eof())
@@ -235,6 +234,17 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
         FatalIOErrorInFunction(dict)
             << "Keyword supportRadius must be > 0 [m], got " << radius
             << exit(FatalIOError);
+    }
+    // Far outside the mesh's size a radius is no length for it (and its
+    // square overflows in the searches)
+    const scalar size = mag(mesh.bounds().span());
+    if (!(radius >= 1e-9*size && radius <= 1e9*size))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword supportRadius " << radius << " is no length for this"
+            << " mesh (its bounding box's diagonal: " << size << "): allowed"
+            << " " << 1e-9*size << " to " << 1e9*size << " [m], in practice"
+            << " several times the largest displacement" << exit(FatalIOError);
     }
     return radius;
 }

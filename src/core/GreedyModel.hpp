@@ -26,6 +26,8 @@ public:
     virtual ~GreedyModel() = default;
 
     //- Append these candidates (in order) to the selected set, then bring
+    //  (a single candidate numerically dependent on the selected set: an
+    //  Error, nothing appended)
     //  residual() up to date. The first call must carry the polynomial.
     virtual void add(const std::vector<Eigen::Index>& indices) = 0;
 

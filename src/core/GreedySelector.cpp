@@ -235,10 +235,38 @@ void GreedySelector::iterate
     result.maxDisplacement = scale;
     std::vector<char> selected(nb, 0);
     std::vector<Eigen::Index> next = seed;
-    for (;;)
+    for (bool seeding = true; ; seeding = false)
     {
-        model.add(next);
-        for (const Eigen::Index i : next)
+        // The seed at once (a dependent seed is an error); then one point
+        // at a time: one numerically dependent on those selected ends the
+        // selection (the model is unchanged by the refused point)
+        std::vector<Eigen::Index> added;
+        if (seeding)
+        {
+            model.add(next);
+            added = next;
+        }
+        else
+        {
+            for (const Eigen::Index i : next)
+            {
+                try
+                {
+                    model.add({i});
+                }
+                catch (const Error&)
+                {
+                    result.dependent = true;
+                    break;
+                }
+                added.push_back(i);
+            }
+        }
+        if (added.empty())
+        {
+            break;
+        }
+        for (const Eigen::Index i : added)
         {
             selected[i] = 1;
             result.selected.push_back(i);
@@ -252,7 +280,11 @@ void GreedySelector::iterate
         result.historySize.push_back(n);
         result.historyError.push_back(eps);
         result.converged = eps <= options_.tolerance;
-        if ((result.converged && n >= minPoints) || n >= options_.maxPoints || worst < 0)
+        if
+        (
+            (result.converged && n >= minPoints) || n >= options_.maxPoints
+         || worst < 0 || result.dependent
+        )
         {
             break;
         }

@@ -79,6 +79,11 @@ struct GreedyResult
     //- Was the tolerance met?
     bool converged = false;
 
+    //- Did the selection stop at a point numerically dependent on the
+    //  selected ones (the kernel matrix singular to round-off with it: the
+    //  interpolant cannot fit better with this kernel and radius)?
+    bool dependent = false;
+
     //- max_i |d_i| (the error scale)
     double maxDisplacement = 0;
 

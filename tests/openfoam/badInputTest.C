@@ -102,6 +102,75 @@ std::vector<badInput> catalogue()
         {"NegativeBlendSlope", mv + st + r + "rotationInterpolation true; rotation { blendSlope -1; }", "blendSlope"},
         {"BlendRampAboveOne", mv + st + r + "rotationInterpolation true; rotation { blendRamp 2; }", "blendRamp"},
         {"MovingPatchRegexMatchesNothing", "movingPatches (\"wing.*\");" + st + r, "movingPatches"},
+
+        // A new user's mistakes (issue 39), refused at the start, naming
+        // the keyword (the 2D box: 3 cells a side, 36 boundary points)
+        {"MaxPointsBelowPolynomial2D", mv + st + r + "controlPoints { selection greedy; maxPoints 2; }", "maxPoints 2 is below the 3 control points the linear polynomial needs in 2D"},
+        {"MaxPointsOneDynamic", mv + st + r + "controlPoints { selection dynamic; maxPoints 1; }", "maxPoints 1 is below"},
+        {"MinPointsAboveCandidates", mv + st + r + "controlPoints { selection greedy; minPoints 500; }", "minPoints 500 is above the"},
+        {"RadiusBelowTheCells", mv + st + "supportRadius 0.01;", "supportRadius 0.01 reaches no cell centre"},
+        {"RelativeRadiusBelowTheCells", mv + st + "supportRadius 0.001 movingExtent;", "reaches no cell centre"},
+
+        // More: every keyword's type, range and belonging
+        {"QualityFloorBelowMinusOne", mv + st + r + "qualityFloor -2;", "qualityFloor"},
+        {"QualityFloorOne", mv + st + r + "qualityFloor 1;", "qualityFloor"},
+        {"QualityFloorWord", mv + st + r + "qualityFloor high;", "qualityFloor"},
+        {"GuardIterationsFraction", mv + st + r + "guardIterations 1.5;", "guardIterations"},
+        {"GuardIterationsTooMany", mv + st + r + "guardIterations 100000;", "guardIterations"},
+        {"EvaluationMemoryWord", mv + st + r + "evaluationMemoryMB lots;", "evaluationMemoryMB"},
+        {"PointsPerThreadFraction", mv + st + r + "pointsPerThread 0.5;", "pointsPerThread"},
+        {"FunctionNumber", mv + st + r + "function 2;", "function"},
+        {"FunctionLowerCase", mv + st + r + "function wendlandC2;", "Unknown function wendlandC2"},
+        {"PolynomialNumber", mv + st + r + "polynomial 2;", "polynomial"},
+        {"RadiusWord", mv + st + "supportRadius large;", "supportRadius"},
+        {"RadiusInfinite", mv + st + "supportRadius 1e400;", "supportRadius"},
+        {"RelativeRadiusNegative", mv + st + "supportRadius -2 movingExtent;", "supportRadius"},
+        {"MovingPatchesWord", "movingPatches bottom;" + st + r, "movingPatches"},
+        {"StaticPatchesWord", mv + "staticPatches top;" + r, "staticPatches"},
+        {"MovingPatchesNumber", "movingPatches (1);" + st + r, "movingPatches"},
+        {"MissingStaticPatches", mv + r, "staticPatches"},
+        {"EmptyPatchAsStatic", mv + "staticPatches (top front);" + r, "empty"},
+        {"QualityMetricNumber", mv + st + r + "qualityMetric 1;", "qualityMetric"},
+        {"FloorActionAbort", mv + st + r + "qualityFloorAction abort;", "qualityFloorAction"},
+        {"BoundaryCorrectionNumber", mv + st + r + "boundaryCorrection 3;", "boundaryCorrection"},
+        {"SelectionNumber", mv + st + r + "controlPoints { selection 2; }", "selection"},
+        {"SelectionCapitalised", mv + st + r + "controlPoints { selection Greedy; }", "selection"},
+        {"ToleranceWord", mv + st + r + "controlPoints { selection greedy; tolerance small; }", "tolerance"},
+        {"ToleranceAboveOne", mv + st + r + "controlPoints { selection greedy; tolerance 2; }", "tolerance"},
+        {"MinPointsNegative", mv + st + r + "controlPoints { selection greedy; minPoints -1; }", "minPoints"},
+        {"MinPointsFraction", mv + st + r + "controlPoints { selection greedy; minPoints 2.5; }", "minPoints"},
+        {"MaxPointsZero", mv + st + r + "controlPoints { selection greedy; maxPoints 0; }", "maxPoints"},
+        {"MaxPointsWord", mv + st + r + "controlPoints { selection greedy; maxPoints many; }", "maxPoints"},
+        {"MinPointsWithAll", mv + st + r + "controlPoints { selection all; minPoints 5; }", "minPoints"},
+        {"MaxPointsWithAll", mv + st + r + "controlPoints { selection all; maxPoints 5; }", "maxPoints"},
+        {"DoubleEdgedWithAll", mv + st + r + "controlPoints { selection all; doubleEdged true; }", "doubleEdged"},
+        {"DoubleEdgedNumber", mv + st + r + "controlPoints { selection greedy; doubleEdged 2; }", "doubleEdged"},
+        {"SelectOnWithAll", mv + st + r + "controlPoints { selection all; selectOn unit; }", "selectOn"},
+        {"ReselectToleranceWithAll", mv + st + r + "controlPoints { selection all; reselectTolerance 0.1; }", "reselectTolerance"},
+        {"ReselectToleranceWord", mv + st + r + "controlPoints { selection greedy; reselectTolerance none; }", "reselectTolerance"},
+        {"NSwapWithAll", mv + st + r + "controlPoints { selection all; nSwap 2; }", "nSwap"},
+        {"NSwapFraction", mv + st + r + "controlPoints { selection dynamic; nSwap 0.5; }", "nSwap"},
+        {"NSwapTooMany", mv + st + r + "controlPoints { selection dynamic; nSwap 5000; }", "nSwap"},
+        {"ProtectStepsWithGreedy", mv + st + r + "controlPoints { selection greedy; protectSteps 2; }", "protectSteps"},
+        {"ProtectStepsNegative", mv + st + r + "controlPoints { selection dynamic; protectSteps -1; }", "protectSteps"},
+        {"SwapRuleWithAll", mv + st + r + "controlPoints { selection all; swapRule errorGuided; }", "swapRule"},
+        {"SwapRuleNumber", mv + st + r + "controlPoints { selection dynamic; swapRule 1; }", "swapRule"},
+        {"BlendStepsWithGreedy", mv + st + r + "controlPoints { selection greedy; swapBlendSteps 2; }", "swapBlendSteps"},
+        {"BlendStepsTooMany", mv + st + r + "controlPoints { selection dynamic; swapBlendSteps 5000; }", "swapBlendSteps"},
+        {"TrialBackoffFraction", mv + st + r + "controlPoints { selection dynamic; trialBackoff 2.5; }", "trialBackoff"},
+        {"TrialQualityDropNegative", mv + st + r + "controlPoints { selection dynamic; trialQualityDrop -0.1; }", "trialQualityDrop"},
+        {"TrialQualityDropWithGreedy", mv + st + r + "controlPoints { selection greedy; trialQualityDrop 0.1; }", "trialQualityDrop"},
+        {"ControlPointsList", mv + st + r + "controlPoints (greedy);", "controlPoints"},
+        {"ControlPointsMisspelt", mv + st + r + "controlPoint { selection greedy; }", "controlPoint"},
+        {"RotationCentreWord", mv + st + r + "rotationInterpolation true; rotation { centre middle; }", "centre"},
+        {"RotationCentreTwoComponents", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0.5); }", "centre"},
+        {"RotationBodyWithoutPatches", mv + st + r + "rotationInterpolation true; rotation { bodies { b { centre (0.5 0 0); } } }", "patches"},
+        {"RotationBodyEmptyPatches", mv + st + r + "rotationInterpolation true; rotation { bodies { b { patches (); } } }", "Keyword patches is an empty list"},
+        {"RotationBlendSlopeWord", mv + st + r + "rotationInterpolation true; rotation { blendSlope steep; }", "blendSlope"},
+        {"RotationBlendRampNegative", mv + st + r + "rotationInterpolation true; rotation { blendRamp -0.5; }", "blendRamp"},
+        {"RotationBlendProfileNumber", mv + st + r + "rotationInterpolation true; rotation { blendProfile 2; }", "blendProfile"},
+        {"RotationInterpolationNumber", mv + st + r + "rotationInterpolation 2;", "rotationInterpolation"},
+        {"RotationWithoutInterpolationFalse", mv + st + r + "rotationInterpolation false; rotation { centre (0.5 0 0); }", "rotationInterpolation"},
     };
 }
 
@@ -172,6 +241,27 @@ TEST(BadInput, MissingCoeffsDictionaryIsNamed)
                     << "message: " << e.message();
             }
         }
+    }
+}
+
+// DCPRBF_SIMD_WIDTH with a word it does not know (avx2): a FatalError
+// naming the variable and what is allowed, not silently ignored
+TEST(BadInput, UnknownSimdWidthWordIsNamed)
+{
+    testCase c(2, 3, "movingPatches (bottom); staticPatches (top left right); supportRadius 0.5;");
+    const std::string before(getEnv("DCPRBF_SIMD_WIDTH"));
+    setEnv("DCPRBF_SIMD_WIDTH", "avx2", true);
+    try
+    {
+        autoPtr<motionSolver> ms(select(c));
+        setEnv("DCPRBF_SIMD_WIDTH", before, true);
+        FAIL() << "no error for DCPRBF_SIMD_WIDTH=avx2";
+    }
+    catch (const Foam::error& e)
+    {
+        setEnv("DCPRBF_SIMD_WIDTH", before, true);
+        EXPECT_NE(e.message().find("DCPRBF_SIMD_WIDTH is \"avx2\": not a width in bits"), std::string::npos)
+            << "message: " << e.message();
     }
 }
 
