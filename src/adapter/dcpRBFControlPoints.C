@@ -10,6 +10,8 @@ License
 #include "GreedySelector.hpp"
 #include "Time.H"
 
+#include <algorithm>
+#include <iterator>
 #include <numeric>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -469,9 +471,7 @@ Foam::scalar Foam::dcpRBFControlPoints::boundaryError
 
 bool Foam::dcpRBFControlPoints::storedBoundary() const
 {
-    const std::size_t budget =
-        (std::size_t(settings_.evaluationMemoryMB()) << 20)/16;
-    return boundaryStored_.prepare(set_.evaluator().centres(), budget);
+    return boundaryStored_.prepare(set_.evaluator().centres(), storageBudget()/16);
 }
 
 
@@ -609,8 +609,37 @@ bool Foam::dcpRBFControlPoints::addNear
 }
 
 
+std::size_t Foam::dcpRBFControlPoints::storageBudget() const
+{
+    // evaluationMemoryMB unset: a matrix is worth storing where it is
+    // reused, i.e. the set settled: within a patch of the last step's
+    // (a set that grows or moves by more at every step costs a build per
+    // step and the memory, for nothing: OpenFOAM's SnakeRiverCanyon)
+    if (settings_.evaluationMemoryAuto() && !settled_)
+    {
+        return 0;
+    }
+    return std::size_t(settings_.evaluationMemoryMB()) << 20;
+}
+
+
 void Foam::dcpRBFControlPoints::endStep(const scalar minQuality)
 {
+    {
+        // settled: at most a patch's centres in or out since the last step
+        std::vector<Eigen::Index> now(set_.indices());
+        std::sort(now.begin(), now.end());
+        std::vector<Eigen::Index> changed;
+        std::set_symmetric_difference
+        (
+            now.begin(), now.end(), lastIndices_.begin(), lastIndices_.end(),
+            std::back_inserter(changed)
+        );
+        settled_ =
+            !lastIndices_.empty()
+         && changed.size() <= std::size_t(2*dcprbf::StoredEvaluation::maxPatchColumns);
+        lastIndices_ = std::move(now);
+    }
     if (stepFrom_)
     {
         // this step's swaps were kept

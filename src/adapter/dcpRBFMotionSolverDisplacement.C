@@ -192,7 +192,7 @@ Foam::scalar Foam::dcpRBFMotionSolver::interpolateDisplacement
 
     // evaluated once per distinct point (2D: the front and back twins)
     const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
-    const std::size_t budget = std::size_t(settings_.evaluationMemoryMB()) << 20;
+    const std::size_t budget = controlPoints_.storageBudget();
     const bool stored = stored_.prepare(s.centres(), budget);
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
     if

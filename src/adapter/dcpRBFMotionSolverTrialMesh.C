@@ -87,7 +87,7 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
     // (without a patch over every point if the current matrix serves the
     // set with a few columns more), else the set's matrix prepared, else
     // (not stored) as the evaluation on the fly of every point would
-    const std::size_t budget = std::size_t(settings_.evaluationMemoryMB()) << 20;
+    const std::size_t budget = controlPoints_.storageBudget();
     const label dim = projection_.dim();
     double* out = &trialDisplacement_[0][0];
     bool made =

@@ -311,6 +311,7 @@ Foam::dcpRBFSettings::dcpRBFSettings
     floorAction_ = r.getEnum("qualityFloorAction", floorActionNames, floorAction::warn);
     guardIterations_ = r.getLabel("guardIterations", 5, 0, 1000);
     boundaryCorrection_ = r.getSwitch("boundaryCorrection", true);
+    evaluationMemoryAuto_ = !dict.found("evaluationMemoryMB");
     evaluationMemoryMB_ = r.getLabel("evaluationMemoryMB", 1024, 0, 1000000);
     pointsPerThread_ = r.getLabel
     (
