@@ -153,6 +153,53 @@ TEST(Modes, SupportRadiusRelativeToTheMovingExtent)
     EXPECT_NEAR(solver.settings().kernel().radius(), 2.0, 1e-12);
 }
 
+// evaluationMemoryMB unset: no matrix is stored until the control set has
+// settled (the first step's set, or one that changes by more than a patch
+// from a step to the next, is evaluated on the fly: OpenFOAM's
+// SnakeRiverCanyon grows its set at every step); set: stored at once
+TEST(Modes, StoredMatricesOnlyOnceTheSetSettles)
+{
+    const std::size_t MB = std::size_t(1) << 20;
+    for (const std::string memory : {"", "evaluationMemoryMB 512;"})
+    {
+        testCase c
+        (
+            3, 10,
+            "movingPatches (bottom); staticPatches (top left right front back); supportRadius 0.8;"
+            " controlPoints { selection greedy; tolerance 1e-2; reselectTolerance 2e-2; } " + memory
+        );
+        autoPtr<motionSolver> ms(select(c));
+        auto& solver = refCast<dcpRBFMotionSolver>(ms());
+        const dcpRBFControlPoints& cp = solver.controlPoints();
+        const bool automatic = memory.empty();
+        // (a third of bump(): no cell squashed flat at the static walls)
+        prescribe
+        (
+            solver.pointDisplacement(), "bottom",
+            [](const point& p) { return bump(p)/3; }
+        );
+        ms->newPoints();
+        EXPECT_EQ(cp.storageBudget(), automatic ? 0 : 512*MB) << "after the first step";
+        ms->newPoints();
+        EXPECT_EQ(cp.storageBudget(), automatic ? 1024*MB : 512*MB) << "the set unchanged";
+        // a wavier bump: the set grows by more than a patch
+        const label before = cp.size();
+        prescribe
+        (
+            solver.pointDisplacement(), "bottom",
+            [](const point& p)
+            {
+                const scalar pi = constant::mathematical::pi;
+                return vector(0, 0.03*std::sin(5*pi*p.x())*std::sin(5*pi*p.z()), 0);
+            }
+        );
+        ms->newPoints();
+        ASSERT_GT(cp.size(), before + 2*dcprbf::StoredEvaluation::maxPatchColumns)
+            << "the test needs a set that grows by more than a patch";
+        EXPECT_EQ(cp.storageBudget(), automatic ? 0 : 512*MB) << "the set grown";
+    }
+}
+
 } // namespace
 
 // ************************************************************************* //
