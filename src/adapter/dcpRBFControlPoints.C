@@ -662,14 +662,30 @@ void Foam::dcpRBFControlPoints::endStep(const scalar minQuality)
     }
     if (time_.writeTime())
     {
-        if (updated_)
+        // refactorized from the indices, as a restart does (restarts are
+        // exact); where a fresh factorization fails to round-off (a set
+        // grown point by point past what it would take at once), the
+        // incremental one is kept: the run goes on, a restart from here
+        // meets the same refusal and says so
+        try
         {
-            set_.refactorize();
-            updated_ = false;
+            if (updated_)
+            {
+                set_.refactorize();
+                updated_ = false;
+            }
+            if (blendFrom_)
+            {
+                *blendFrom_ = set_.freshState(blendFrom_->indices, blendFrom_->ages);
+            }
         }
-        if (blendFrom_)
+        catch (const dcprbf::Error& e)
         {
-            *blendFrom_ = set_.freshState(blendFrom_->indices, blendFrom_->ages);
+            WarningInFunction
+                << "Time " << time_.timeName() << ": the control set could not"
+                << " be refactorized from its indices (" << e.what() << "); the"
+                << " run goes on with its updated factorization, but a restart"
+                << " from this time will fail: " << whatToDo(e).c_str() << endl;
         }
     }
 }

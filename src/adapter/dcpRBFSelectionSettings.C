@@ -83,7 +83,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     doubleEdged = r.getSwitch("doubleEdged", false);
     selectOn = r.getEnum("selectOn", targetNames, target::displacement);
     reselectTolerance =
-        r.getScalar("reselectTolerance", min(10*tolerance, 1.0), tolerance, GREAT);
+        r.getScalar("reselectTolerance", max(min(10*tolerance, 1.0), tolerance), tolerance, GREAT, true);
     swapRule = r.getEnum("swapRule", ruleNames, rule::errorGuided);
     nSwap = r.getLabel("nSwap", swapRule == rule::errorGuided ? 4 : 1, 0, 1000);
     protectSteps = r.getLabel("protectSteps", 3, 0, 1000000);

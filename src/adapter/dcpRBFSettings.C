@@ -241,9 +241,11 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
     if (!(radius >= 1e-9*size && radius <= 1e9*size))
     {
         FatalIOErrorInFunction(dict)
-            << "Keyword supportRadius " << radius << " is no length for this"
-            << " mesh (its bounding box's diagonal: " << size << "): allowed"
-            << " " << 1e-9*size << " to " << 1e9*size << " [m], in practice"
+            << "Keyword supportRadius " << Foam::name(radius).c_str()
+            << " is no length for this mesh (its bounding box's diagonal: "
+            << Foam::name(size).c_str() << "): allowed "
+            << Foam::name(1e-9*size).c_str() << " to "
+            << Foam::name(1e9*size).c_str() << " [m], in practice"
             << " several times the largest displacement" << exit(FatalIOError);
     }
     return radius;

@@ -124,6 +124,8 @@ std::vector<badInput> catalogue()
         {"PolynomialNumber", mv + st + r + "polynomial 2;", "polynomial"},
         {"RadiusWord", mv + st + "supportRadius large;", "supportRadius"},
         {"RadiusInfinite", mv + st + "supportRadius 1e400;", "supportRadius"},
+        {"RadiusHuge", mv + st + "supportRadius 1e200;", "supportRadius 1e+200 is no length for this mesh"},
+        {"RadiusTiny", mv + st + "supportRadius 1e-200;", "supportRadius 1e-200 is no length for this mesh"},
         {"RelativeRadiusNegative", mv + st + "supportRadius -2 movingExtent;", "supportRadius"},
         {"MovingPatchesWord", "movingPatches bottom;" + st + r, "movingPatches"},
         {"StaticPatchesWord", mv + "staticPatches top;" + r, "staticPatches"},
