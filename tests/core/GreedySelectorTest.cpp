@@ -10,6 +10,7 @@
 #include "TestPoints.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <tuple>
@@ -185,5 +186,31 @@ INSTANTIATE_TEST_SUITE_P
             + (std::get<3>(p.param) ? "_double" : "_single");
     }
 );
+
+// The selection does not depend on the number of threads: large enough for
+// the incremental model's parallel update (candidates x points above its
+// threshold), 1 and 2 threads select the same points with the same
+// coefficients, bit for bit
+TEST(GreedyThreads, SameSelectionOnOneAndTwoThreads)
+{
+    const Points x = randomPoints(2500, 3, 17);
+    const Values d = test::smoothField(x);
+    GreedyOptions o;
+    o.tolerance = 1e-12;
+    o.maxPoints = 60;
+    const GreedySelector g(RadialKernel::fromName("WendlandC2", 0.8), true, 3, o);
+    ASSERT_GT(x.rows()*o.maxPoints, 100000) << "too small for the parallel update";
+    const int nThreads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const GreedyResult one = g.select(x, d);
+    omp_set_num_threads(2);
+    const GreedyResult two = g.select(x, d);
+    omp_set_num_threads(nThreads);
+    ASSERT_EQ(one.selected.size(), std::size_t(o.maxPoints));
+    EXPECT_EQ(one.selected, two.selected);
+    EXPECT_TRUE(one.alpha == two.alpha);
+    EXPECT_TRUE(one.beta == two.beta);
+    EXPECT_EQ(one.historyError, two.historyError);
+}
 
 } // namespace
