@@ -84,13 +84,14 @@ int main(int argc, char *argv[])
         if (empty >= 0) p[i][empty] = p0[i][empty];
     }
 
-    // the region of every cell: the "moving points" are all points
+    // the region of every cell: the "moving points" are all points (no
+    // other sources of the check, not affine beyond: all cells checked)
     const dcpRBFPlaneProjection projection(mesh);
     clockTime c;
     const dcpRBFQualityRegion region
     (
-        mesh, projection, p0, projection.toCore(p0), GREAT,
-        dcprbf::TetQuality::Metric::sizeShape
+        mesh, projection, p0, projection.toCore(p0), dcprbf::Points(0, 3),
+        GREAT, false, dcprbf::TetQuality::Metric::sizeShape
     );
     Info<< "cells " << region.cells().size() << ", points " << mesh.nPoints()
         << ", region set-up " << 1000*c.elapsedTime() << " ms" << nl;

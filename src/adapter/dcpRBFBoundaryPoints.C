@@ -9,6 +9,7 @@ License
 #include "dcpRBFBoundaryPoints.H"
 #include "Pstream.H"
 #include "syncTools.H"
+#include "dcpRBFVersion.H"
 
 #include <algorithm>
 #include <numeric>
@@ -23,8 +24,7 @@ Foam::List<Foam::List<Type>> Foam::dcpRBFBoundaryPoints::allGather
 {
     List<List<Type>> all(Pstream::nProcs());
     all[Pstream::myProcNo()] = local;
-    Pstream::gatherList(all);
-    Pstream::scatterList(all);
+    dcpRBFCompat::allGatherList(all);
     return all;
 }
 

@@ -9,6 +9,7 @@ License
 #include "dcpRBFControlPoints.H"
 #include "GreedySelector.hpp"
 #include "Time.H"
+#include "dcpRBFVersion.H"
 
 #include <algorithm>
 #include <iterator>
@@ -188,13 +189,13 @@ void Foam::dcpRBFControlPoints::storeState(dictionary& state) const
     state.set("trialWait", trialWait_);
     state.set("trialBackoff", trialBackoff_);
     state.set("trialQuality", trialQuality_);
-    state.set("indices", labelList(set_.indices().begin(), set_.indices().end()));
-    state.set("ages", labelList(set_.ages().begin(), set_.ages().end()));
+    state.set("indices", dcpRBFCompat::makeList<label>(set_.indices()));
+    state.set("ages", dcpRBFCompat::makeList<label>(set_.ages()));
     if (blendFrom_)
     {
         state.set("blendStep", blendStep_);
-        state.set("blendFromIndices", labelList(blendFrom_->indices.begin(), blendFrom_->indices.end()));
-        state.set("blendFromAges", labelList(blendFrom_->ages.begin(), blendFrom_->ages.end()));
+        state.set("blendFromIndices", dcpRBFCompat::makeList<label>(blendFrom_->indices));
+        state.set("blendFromAges", dcpRBFCompat::makeList<label>(blendFrom_->ages));
     }
     else
     {

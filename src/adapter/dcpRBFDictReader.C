@@ -10,6 +10,7 @@ License
 #include "Switch.H"
 #include "wordRes.H"
 #include "OStringStream.H"
+#include "dcpRBFVersion.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -102,9 +103,9 @@ bool Foam::dcpRBFDictReader::getSwitch
     const token& t = *tp;
     const Switch sw
     (
-        t.isWord() ? Switch(t.wordToken(), true) : Switch(Switch::INVALID)
+        t.isWord() ? dcpRBFCompat::findSwitch(t.wordToken()) : Switch(Switch::INVALID)
     );
-    if (!t.isWord() || !sw.valid())
+    if (!t.isWord() || sw.type() == Switch::INVALID)
     {
         FatalIOErrorInFunction(dict_)
             << "Keyword " << keyword << " must be a switch; got " << t

@@ -12,6 +12,7 @@ License
 #include "Pstream.H"
 #include "emptyPolyPatch.H"
 #include "processorPolyPatch.H"
+#include "dcpRBFVersion.H"
 
 #include <algorithm>
 #include <limits>
@@ -176,8 +177,7 @@ dcprbf::Points Foam::dcpRBFQualityRegion::checkSources
     }
     List<List<FixedList<scalar, 3>>> all(Pstream::nProcs());
     all[Pstream::myProcNo()].transfer(local);
-    Pstream::gatherList(all);
-    Pstream::scatterList(all);
+    dcpRBFCompat::allGatherList(all);
 
     const dcprbf::Points& candidates = boundaryPoints.points();
     label n = candidates.rows();
@@ -193,6 +193,26 @@ dcprbf::Points Foam::dcpRBFQualityRegion::checkSources
         }
     }
     return sources;
+}
+
+
+Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFQualityRegion::globalLowest
+(
+    const rankedCell& local
+)
+{
+    // Gathered as lists of scalars: newer versions gather a list of
+    // FixedLists (contiguous) with memmove, a -Wclass-memaccess warning; and
+    // reduce of a FixedList is elementwise, not the lexicographic order here
+    List<scalarList> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = dcpRBFCompat::makeList<scalar>(local);
+    dcpRBFCompat::allGatherList(all);
+    rankedCell lowest(local);
+    for (const scalarList& c : all)
+    {
+        lowest = std::min(lowest, rankedCell({c[0], c[1], c[2], c[3]}));
+    }
+    return lowest;
 }
 
 
@@ -424,12 +444,10 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     for (const label i : highestAt) highest.push_back(ranked(i));
 
     List<List<rankedCell>> worstAll(Pstream::nProcs()), bestAll(Pstream::nProcs());
-    worstAll[Pstream::myProcNo()] = List<rankedCell>(lowest.begin(), lowest.end());
-    bestAll[Pstream::myProcNo()] = List<rankedCell>(highest.begin(), highest.end());
-    Pstream::gatherList(worstAll);
-    Pstream::scatterList(worstAll);
-    Pstream::gatherList(bestAll);
-    Pstream::scatterList(bestAll);
+    worstAll[Pstream::myProcNo()] = dcpRBFCompat::makeList<rankedCell>(lowest);
+    bestAll[Pstream::myProcNo()] = dcpRBFCompat::makeList<rankedCell>(highest);
+    dcpRBFCompat::allGatherList(worstAll);
+    dcpRBFCompat::allGatherList(bestAll);
 
     std::vector<rankedCell> worst, best;
     for (const auto& l : worstAll) worst.insert(worst.end(), l.begin(), l.end());
@@ -437,8 +455,8 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     std::sort(worst.begin(), worst.end());
     std::sort(best.begin(), best.end(), [](const rankedCell& a, const rankedCell& b) { return b < a; });
 
-    s.worst = List<rankedCell>(worst.begin(), worst.begin() + min(n, label(worst.size())));
-    s.best = List<rankedCell>(best.begin(), best.begin() + min(n, label(best.size())));
+    s.worst = dcpRBFCompat::makeList<rankedCell>(worst.begin(), worst.begin() + min(n, label(worst.size())));
+    s.best = dcpRBFCompat::makeList<rankedCell>(best.begin(), best.begin() + min(n, label(best.size())));
 
     // The check: the region and the other cells whose points can move
     // (the last of them standing for nAffine_ if any moved affinely)
@@ -464,11 +482,7 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     s.checkedMean =
         s.nChecked
       ? returnReduce(sum + outerSum, sumOp<scalar>())/s.nChecked : 1;
-    List<rankedCell> lowestAll(Pstream::nProcs());
-    lowestAll[Pstream::myProcNo()] = lowestHere;
-    Pstream::gatherList(lowestAll);
-    Pstream::scatterList(lowestAll);
-    s.lowest = *std::min_element(lowestAll.begin(), lowestAll.end());
+    s.lowest = globalLowest(lowestHere);
     s.hasLowest = s.lowest[0] < GREAT;
     s.checkedMin = s.hasLowest ? s.lowest[0] : 1;
     s.quality.transfer(q);

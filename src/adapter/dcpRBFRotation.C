@@ -75,7 +75,7 @@ Foam::dcpRBFRotation::dcpRBFRotation
     boundary_(boundary),
     evalPoints_(evalPoints)
 {
-    if (coeffs.found("rotation") && !coeffs.isDict("rotation"))
+    if (coeffs.found("rotation") && !coeffs.findDict("rotation"))
     {
         FatalIOErrorInFunction(coeffs)
             << "Keyword rotation must be a sub-dictionary, e.g."

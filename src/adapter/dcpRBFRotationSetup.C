@@ -31,7 +31,7 @@ void Foam::dcpRBFRotation::readBodies
     List<const dictionary*> bodyDicts;
     if (dict.found("bodies"))
     {
-        if (!dict.isDict("bodies"))
+        if (!dict.findDict("bodies"))
         {
             FatalIOErrorInFunction(dict)
                 << "Keyword bodies must be a sub-dictionary of bodies, each"

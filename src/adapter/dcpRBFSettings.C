@@ -260,7 +260,7 @@ dcprbf::RadialKernel Foam::dcpRBFSettings::readKernel
 ) const
 {
     const auto& n = dcprbf::RadialKernel::names();
-    const wordList names(n.begin(), n.end());
+    const wordList names(dcpRBFCompat::makeList<word>(n));
     const label i = r.getChoice("function", names, "WendlandC2");
     return dcprbf::RadialKernel::fromName(names[i], readRadius(r.dict(), mesh, points0));
 }
@@ -295,7 +295,7 @@ Foam::dcpRBFSettings::dcpRBFSettings
 
     if (dict.found("controlPoints"))
     {
-        if (!dict.isDict("controlPoints"))
+        if (!dict.findDict("controlPoints"))
         {
             FatalIOErrorInFunction(dict)
                 << "Keyword controlPoints must be a sub-dictionary,"

@@ -9,6 +9,7 @@ License
 #include "dcpRBFThreads.H"
 #include "ThreadCount.hpp"
 #include "Pstream.H"
+#include "dcpRBFVersion.H"
 #include "OSspecific.H"
 
 #include <sched.h>
@@ -43,8 +44,7 @@ Foam::label Foam::dcpRBFThreads::ranksOnNode()
     }
     List<string> hosts(Pstream::nProcs());
     hosts[Pstream::myProcNo()] = hostName();
-    Pstream::gatherList(hosts);
-    Pstream::scatterList(hosts);
+    dcpRBFCompat::allGatherList(hosts);
     label n = 0;
     for (const string& h : hosts)
     {

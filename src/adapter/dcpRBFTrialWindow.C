@@ -8,6 +8,7 @@ License
 
 #include "dcpRBFTrialWindow.H"
 #include "SmallestValues.hpp"
+#include "dcpRBFVersion.H"
 
 #include <algorithm>
 #include <iterator>
@@ -28,9 +29,8 @@ Foam::labelList Foam::dcpRBFTrialWindow::lowest
     );
 
     List<scalarList> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = scalarList(lowestHere.begin(), lowestHere.end());
-    Pstream::gatherList(all);
-    Pstream::scatterList(all);
+    all[Pstream::myProcNo()] = dcpRBFCompat::makeList<scalar>(lowestHere);
+    dcpRBFCompat::allGatherList(all);
     std::vector<scalar> merged;
     for (const scalarList& l : all)
     {
@@ -131,15 +131,7 @@ Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::globalWorst
     const dcpRBFQualityRegion::rankedCell& local
 )
 {
-    List<dcpRBFQualityRegion::rankedCell> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = local;
-    Pstream::gatherList(all);
-    Pstream::scatterList(all);
-    dcpRBFQualityRegion::rankedCell w(local);
-    for (const auto& c : all)
-    {
-        w = std::min(w, c);
-    }
+    dcpRBFQualityRegion::rankedCell w(dcpRBFQualityRegion::globalLowest(local));
     if (w[0] == VGREAT)
     {
         w[0] = 1;
@@ -189,7 +181,7 @@ void Foam::dcpRBFTrialWindow::add
         near.begin(), near.end(), positions_.begin(), positions_.end(),
         std::back_inserter(added)
     );
-    append(labelList(added.begin(), added.end()));
+    append(dcpRBFCompat::makeList<label>(added));
 }
 
 

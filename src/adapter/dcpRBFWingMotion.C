@@ -13,6 +13,7 @@ License
 #include "polyMesh.H"
 #include "unitConversion.H"
 #include "Constant.H"
+#include "dcpRBFVersion.H"
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * * //
 
@@ -87,7 +88,7 @@ Foam::dcpRBFWingMotion::dcpRBFWingMotion(const dictionary& dict)
     (
         twistShapeNames.getOrDefault("twistShape", dict, twistShapeType::linear)
     ),
-    twistAxisPoint_(dict.lookupOrDefault<point>("twistAxisPoint", root_)),
+    twistAxisPoint_(dict.getOrDefault<point>("twistAxisPoint", root_)),
     twistAxisDirection_(spanAxis_)
 {
     if (mag(deflectionDirection_ & spanAxis_) > 1e-6)
@@ -237,8 +238,14 @@ wingBendingTwistDisplacementPointPatchVectorField
 :
     fixedValuePointPatchField<vector>(p, iF, dict, false),
     motion_(dict),
-    tipDeflection_(Function1<scalar>::New("tipDeflection", dict)),
-    tipTwist_(Function1<scalar>::New("tipTwist", dict)),
+    tipDeflection_
+    (
+        dcpRBFCompat::newFunction1<scalar>("tipDeflection", dict, this->db())
+    ),
+    tipTwist_
+    (
+        dcpRBFCompat::newFunction1<scalar>("tipTwist", dict, this->db())
+    ),
     p0_(p.localPoints())
 {
     if (dict.found("p0"))
