@@ -17,6 +17,7 @@ Description
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 
 int main(int argc, char* argv[])
@@ -35,7 +36,13 @@ int main(int argc, char* argv[])
         Foam::FatalIOError.throwExceptions();
     }
 
-    return RUN_ALL_TESTS();
+    // The result as the exit status, whatever OpenFOAM's objects do on their
+    // way out (the process otherwise exits with 0 after failed tests: the
+    // mutation runner reads the status; ./Alltest the XML report)
+    const int result = RUN_ALL_TESTS();
+    Foam::Info<< Foam::flush;
+    std::fflush(nullptr);
+    std::_Exit(result);
 }
 
 // ************************************************************************* //
