@@ -192,3 +192,20 @@ test_restart_otherPatches_selectsAnewSaysSo() {
         || fail "the warning does not say what changed: $(head -c 400 warning)"
     tail -n 3 log.moveDynamicMesh.1 | grep -q '^End' || fail "the restarted run did not end"
 }
+
+# A restart inside a held trials' wait (a small pitch: the minimum quality
+# falls by less than trialQualityDrop a step, the wait is not ended early):
+# the restarted run waits as the uninterrupted one (no trial at t = 0.6),
+# step for step (restartEqualsUninterrupted compares dcpRBF.dat's rows)
+test_restart_insideAHeldTrialsWait() {
+    write_motionControls .
+    airfoilMesh 0.03 1.0
+    airfoilPointDisplacement 0.35
+    dynamicMeshDict "$(airfoilCoeffs "selection dynamic; tolerance 1e-2; nSwap 2;")"
+    restartEqualsUninterrupted 1
+    awk '$1 == "trialWait" { w = $2 + 0 } END { exit !(w > 1) }' 0.5/uniform/dcpRBFState \
+        || fail "no trials' wait pending at t = 0.5: the restart does not fall in one"
+    awk '!/^#/ && $1 == 0.6 { found = 1; if ($3 + $15 > 0) exit 1 } END { exit !found }' \
+        postProcessing/dcpRBF/0/dcpRBF.dat \
+        || fail "the uninterrupted run tries swaps at t = 0.6: the wait is not held there"
+}
