@@ -39,11 +39,12 @@ std::vector<std::vector<double>> stepRows(const testCase& c)
 }
 
 bumpRun runBump(const std::string& controlPoints, label nSteps, label n,
-    scalar perStep, const std::vector<scalar>& amplitudes)
+    scalar perStep, const std::vector<scalar>& amplitudes,
+    const std::string& extraCoeffs, scalar (*shape)(scalar))
 {
     // a boundary layer: cells 30 times thinner at the bottom wall than at
     // the top, where a reduced set's boundary error folds them first
-    testCase c(2, n, patches + " boundaryCorrection false; guardIterations 0;"
+    testCase c(2, n, patches + " boundaryCorrection false; guardIterations 0; " + extraCoeffs +
         " controlPoints { " + controlPoints + " }", "wall",
         "{ type fixedValue; value uniform (0 0 0); }", "(1 30 1)");
     autoPtr<motionSolver> ms(select(c));
@@ -55,9 +56,9 @@ bumpRun runBump(const std::string& controlPoints, label nSteps, label n,
     {
         ++c.runTime();
         const scalar a = amplitudes.empty() ? perStep*step : amplitudes[step - 1];
-        prescribe(solver.pointDisplacement(), "bottom", [a](const point& x)
+        prescribe(solver.pointDisplacement(), "bottom", [a, shape](const point& x)
         {
-            return vector(0, a*std::sin(2*constant::mathematical::pi*x.x()), 0);
+            return vector(0, a*(shape ? shape(x.x()) : std::sin(2*constant::mathematical::pi*x.x())), 0);
         });
         const pointField p(ms->newPoints());
         // the new points (the measured ones, reused when the displacement

@@ -309,6 +309,41 @@ TEST(ErrorGuidedBlend, PhasedInSwapsKeepTheMeshVelocitySmooth)
     EXPECT_LT(largestJerk(phased), 0.5*largestJerk(atOnce));
 }
 
+//- Two bumps (x = 1/4 and 3/4), the first 3 % higher
+scalar twoBumps(const scalar x)
+{
+    return (x < 0.5 ? 1.03 : 1.0)*std::abs(std::sin(2*constant::mathematical::pi*x));
+}
+
+// Kept trials are abandoned where the step's whole mesh is no better than
+// without them: a swap never makes the mesh worse than not swapping. Two
+// bumps of about the same height on a boundary-layer box, 20 control points:
+// a trial judged on the worst cells (at one bump) helps there, but its
+// joining point's kernel reaches the other bump's cells, outside the window
+// (here at step 6: two trials kept, then abandoned: no point added, the
+// kept ones counted with the undone one, the mesh far from inverted, so no
+// rescue). Without the whole-mesh comparison the step would add them
+TEST(ErrorGuidedSwaps, KeptTrialsAbandonedWhereTheWholeMeshIsNoBetter)
+{
+    const std::string fixedN =
+        "tolerance 1e-12; minPoints 20; maxPoints 20; reselectTolerance 1e9;";
+    const bumpRun d
+    (
+        runBump
+        (
+            "selection dynamic; nSwap 4; swapBlendSteps 1; trialBackoff 1;"
+            " trialQualityDrop 1; " + fixedN,
+            12, 48, 0.012, {}, "", twoBumps
+        )
+    );
+    label abandoned = 0;
+    for (const auto& row : d.rows)
+    {
+        if (row[cMinQ] > 0.3 && row[cAdded] == 0 && row[cUndone] >= 2) ++abandoned;
+    }
+    EXPECT_GT(abandoned, 0) << "no step whose kept trials were abandoned";
+}
+
 } // namespace
 
 // ************************************************************************* //
