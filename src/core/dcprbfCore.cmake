@@ -30,9 +30,18 @@ endfunction()
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(OpenMP REQUIRED)
 
-file(GLOB DCPRBF_CORE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/*.cpp)
+# Sources in folders by role (see src/core/README.md); headers are included
+# by name alone, as wmake's lnInclude flattens them for OpenFOAM
+file(GLOB_RECURSE DCPRBF_CORE_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/*.cpp)
+file(GLOB_RECURSE DCPRBF_CORE_HEADERS CONFIGURE_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/*.hpp)
+set(DCPRBF_CORE_INCLUDE_DIRS)
+foreach(header IN LISTS DCPRBF_CORE_HEADERS)
+    get_filename_component(dir ${header} DIRECTORY)
+    list(APPEND DCPRBF_CORE_INCLUDE_DIRS ${dir})
+endforeach()
+list(REMOVE_DUPLICATES DCPRBF_CORE_INCLUDE_DIRS)
 add_library(dcprbfCore STATIC ${DCPRBF_CORE_SOURCES})
-target_include_directories(dcprbfCore PUBLIC ${CMAKE_CURRENT_LIST_DIR})
+target_include_directories(dcprbfCore PUBLIC ${DCPRBF_CORE_INCLUDE_DIRS})
 dcprbf_warnings(dcprbfCore)
 # the core is also built by wmake for OpenFOAM v1912, whose default is C++14
 set_target_properties(dcprbfCore PROPERTIES CXX_STANDARD 14)

@@ -10,6 +10,7 @@ License
 
 #include "testHelpers.H"
 #include "dcpRBFWingMotion.H"
+#include "wingBendingTwistDisplacementPointPatchVectorField.H"
 #include "StringStream.H"
 #include "pointFields.H"
 
