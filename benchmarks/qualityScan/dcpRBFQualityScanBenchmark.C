@@ -27,7 +27,7 @@ Description
 #include "clockTime.H"
 #include "dcpRBFCellQuality.H"
 #include "dcpRBFQualityRegion.H"
-#include "TetBatch.hpp"
+#include "SimdWidth.hpp"
 #include "dcpRBFPlaneProjection.H"
 
 #include <omp.h>
@@ -67,8 +67,8 @@ int main(int argc, char *argv[])
     #include "createPolyMesh.H"
     const label n = args.getOrDefault<label>("repeat", 7);
     const label nRef = args.getOrDefault<label>("referenceRepeat", n);
-    dcprbf::TetBatch::limitWidth(unsigned(max(0, args.getOrDefault<label>("simdWidth", 512))));
-    Info<< "SIMD width " << label(dcprbf::TetBatch::width()) << " bits" << nl;
+    dcprbf::SimdWidth::limit(unsigned(max(0, args.getOrDefault<label>("simdWidth", 512))));
+    Info<< "SIMD width " << label(dcprbf::SimdWidth::bits()) << " bits" << nl;
 
     const pointField& p0 = mesh.points();
     const boundBox bb(p0);

@@ -214,7 +214,7 @@ TEST(CellQualityScan, TetQualityEqualsTheReferenceMetric)
                              TetQuality::Metric::shape})
         {
             const double ref = TetQuality::compute(r, c, m);
-            const double q = TetMeasures::tetQuality
+            const double q = detail::TetMeasures::tetQuality
             (
                 r[0].data(), r[1].data(), r[2].data(), r[3].data(),
                 c[0].data(), c[1].data(), c[2].data(), c[3].data(), m
@@ -231,7 +231,7 @@ TEST(CellQualityScan, DegenerateReferenceIsOne)
 {
     const double r[4][3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}};
     const double c[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    EXPECT_EQ(TetMeasures::tetQuality(r[0], r[1], r[2], r[3], c[0], c[1], c[2], c[3],
+    EXPECT_EQ(detail::TetMeasures::tetQuality(r[0], r[1], r[2], r[3], c[0], c[1], c[2], c[3],
                                           TetQuality::Metric::sizeShape), 1.0);
 }
 
@@ -453,11 +453,11 @@ TEST(CellQualityScan, KeyRanksAsTheQuality)
             // singular values)
             const double a1 = 3*std::cbrt(J1*J1)*std::exp(logA(gen));
             const double a2 = 3*std::cbrt(J2*J2)*std::exp(logA(gen));
-            const double q1 = TetMeasures::quality(J1, a1, m);
-            const double q2 = TetMeasures::quality(J2, a2, m);
+            const double q1 = detail::TetMeasures::quality(J1, a1, m);
+            const double q2 = detail::TetMeasures::quality(J2, a2, m);
             if (std::abs(q1 - q2) > 1e-12*std::max(q1, q2))
             {
-                EXPECT_EQ(q1 < q2, TetMeasures::rankKey(J1, a1, m) < TetMeasures::rankKey(J2, a2, m));
+                EXPECT_EQ(q1 < q2, detail::TetMeasures::rankKey(J1, a1, m) < detail::TetMeasures::rankKey(J2, a2, m));
             }
         }
     }
@@ -559,7 +559,7 @@ TEST(CellQualityScan, SimdBuildsBitIdentical)
 {
     // the AVX-512 and AVX2 builds (where the processor has them) and the
     // default one: no contraction, the same values to the last bit
-    if (!TetBatch::wideAvailable())
+    if (!detail::TetBatch::wideAvailable())
     {
         GTEST_SKIP() << "no AVX2 or AVX-512 build on this processor: one build only";
     }

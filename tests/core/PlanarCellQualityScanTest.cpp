@@ -157,7 +157,7 @@ TEST(PlanarCellQualityScan, EqualsTheDecompositionOfThePrismsIncludingInverted)
 TEST(PlanarCellQualityScan, RigidMotionIsOneAndThreadsAreBitIdentical)
 {
     // 10800 cells (5400 quadrilaterals, 5400 triangles): several chunks of
-    // each PlanarPolygonBatch, enough for the scan to use threads
+    // each detail::PlanarPolygonBatch, enough for the scan to use threads
     const Extrusion e(90, 0, 1, 0.1);
     std::vector<double> p(e.points);
     const double c = std::cos(0.7), s = std::sin(0.7);
@@ -229,7 +229,7 @@ TEST(PlanarCellQualityScan, SimdBuildsBitIdentical)
 {
     // the AVX-512, the AVX2 and the default build of the SIMD kernels:
     // the same bits
-    if (!TetBatch::wideAvailable())
+    if (!detail::TetBatch::wideAvailable())
     {
         GTEST_SKIP() << "no AVX2 or AVX-512 build on this processor: one build only";
     }
@@ -250,7 +250,7 @@ TEST(PlanarCellQualityScan, SimdBuildsBitIdentical)
 TEST(PlanarCellQualityScan, PolygonsOfEveryKindEqualTheirTrianglesQualities)
 {
     // 400 separate triangles, quadrilaterals or pentagons (several of
-    // PlanarPolygonBatch's chunks; pentagons: PlanarMapBatch), each with its
+    // detail::PlanarPolygonBatch's chunks; pentagons: detail::PlanarMapBatch), each with its
     // own points, moved each by its own map: a shear, a scaling by 1e16 or
     // 1e-16 (J beyond the rank key's range: the scalar path), a reflection
     // (inverted), one point pushed across (some triangles inverted), a flat
@@ -344,11 +344,11 @@ TEST(PlanarCellQualityScan, PolygonsOfEveryKindEqualTheirTrianglesQualities)
 namespace
 {
 
-// The qualities as the scan computed them before PlanarPolygonBatch, from
+// The qualities as the scan computed them before detail::PlanarPolygonBatch, from
 // the classes it still uses for the other polygons: per map (a triangle:
 // its own, (b - a, c - a); else (a - c, b - c), c the vertex average) the
-// reference inverse, PlanarMapBatch, TetMeasures::Worst (the first of
-// equal keys), WorstBatch
+// reference inverse, detail::PlanarMapBatch, detail::TetMeasures::Worst (the first of
+// equal keys), detail::WorstBatch
 std::vector<double> mapBatchQualities
 (
     const std::vector<std::size_t>& start,
@@ -361,7 +361,7 @@ std::vector<double> mapBatchQualities
 {
     const std::size_t n = start.size() - 1;
     std::vector<double> q(n);
-    WorstBatch finals(metric, wide);
+    detail::WorstBatch finals(metric, wide);
     for (std::size_t c = 0; c < n; ++c)
     {
         const std::size_t j0 = start[c], k = start[c + 1] - j0;
@@ -391,7 +391,7 @@ std::vector<double> mapBatchQualities
             }
         };
         const std::size_t nMaps = k == 3 ? 1 : k;
-        PlanarMapBatch maps;
+        detail::PlanarMapBatch maps;
         maps.resize(nMaps);
         for (std::size_t j = 0; j < nMaps; ++j)
         {
@@ -409,7 +409,7 @@ std::vector<double> mapBatchQualities
             maps.set(j, e[0], e[1], e[2], e[3], inv, flat);
         }
         maps.measure(metric, wide);
-        TetMeasures::Worst worst(metric);
+        detail::TetMeasures::Worst worst(metric);
         for (std::size_t j = 0; j < nMaps; ++j) worst.add(maps.J(j), maps.a2(j), maps.key(j));
         finals.add(worst, &q[c]);
     }

@@ -3,7 +3,7 @@
 // processor has (AVX-512, then AVX2 under a cap); the cap as before after.
 #pragma once
 
-#include "TetBatch.hpp"
+#include "SimdWidth.hpp"
 
 #include <vector>
 
@@ -16,8 +16,8 @@ namespace test
 class WidthCapGuard
 {
 public:
-    WidthCapGuard() : cap_(TetBatch::widthCap()) {}
-    ~WidthCapGuard() { TetBatch::limitWidth(cap_); }
+    WidthCapGuard() : cap_(SimdWidth::cap()) {}
+    ~WidthCapGuard() { SimdWidth::limit(cap_); }
     WidthCapGuard(const WidthCapGuard&) = delete;
     WidthCapGuard& operator=(const WidthCapGuard&) = delete;
 
@@ -34,8 +34,8 @@ std::vector<unsigned> atEachSimdWidth(F f)
     std::vector<unsigned> run;
     for (const unsigned bits : {512u, 256u})
     {
-        TetBatch::limitWidth(bits);
-        if (TetBatch::width() == bits)
+        SimdWidth::limit(bits);
+        if (SimdWidth::bits() == bits)
         {
             f(bits);
             run.push_back(bits);

@@ -1,5 +1,5 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
-// Unit tests of the SIMD qualities: TetMeasures::quality over the whole
+// Unit tests of the SIMD qualities: detail::TetMeasures::quality over the whole
 // ranked range, the same on the AVX-512, the AVX2 and the default build;
 // the width cap picks each build.
 #include "TetBatch.hpp"
@@ -41,7 +41,7 @@ unsigned expectedWidth()
         }
     }
     #endif
-    return TetBatch::width();   // no flags to read: not checked
+    return detail::TetBatch::width();   // no flags to read: not checked
 }
 
 } // namespace
@@ -53,27 +53,27 @@ TEST(TetBatch, WidthCapPicksEachBuild)
 {
     const test::WidthCapGuard guard;
     const unsigned widest = expectedWidth();
-    TetBatch::limitWidth(512);
-    EXPECT_EQ(TetBatch::width(), widest);
-    TetBatch::limitWidth(4096);
-    EXPECT_EQ(TetBatch::width(), widest);
-    TetBatch::limitWidth(300);
-    EXPECT_EQ(TetBatch::width(), std::min(widest, 256u));
-    TetBatch::limitWidth(256);
-    EXPECT_EQ(TetBatch::width(), std::min(widest, 256u));
-    TetBatch::limitWidth(100);
-    EXPECT_EQ(TetBatch::width(), 0u);
-    EXPECT_FALSE(TetBatch::wideAvailable());
+    detail::TetBatch::limitWidth(512);
+    EXPECT_EQ(detail::TetBatch::width(), widest);
+    detail::TetBatch::limitWidth(4096);
+    EXPECT_EQ(detail::TetBatch::width(), widest);
+    detail::TetBatch::limitWidth(300);
+    EXPECT_EQ(detail::TetBatch::width(), std::min(widest, 256u));
+    detail::TetBatch::limitWidth(256);
+    EXPECT_EQ(detail::TetBatch::width(), std::min(widest, 256u));
+    detail::TetBatch::limitWidth(100);
+    EXPECT_EQ(detail::TetBatch::width(), 0u);
+    EXPECT_FALSE(detail::TetBatch::wideAvailable());
 
     // the environment's DCPRBF_SIMD_WIDTH, read once for the first cap
-    EXPECT_EQ(TetBatch::widthCapOf(nullptr), 512u);
-    EXPECT_EQ(TetBatch::widthCapOf("256"), 256u);
-    EXPECT_EQ(TetBatch::widthCapOf("0"), 0u);
-    EXPECT_EQ(TetBatch::widthCapOf("1024"), 512u);
-    EXPECT_EQ(TetBatch::widthCapOf("avx2"), 512u);
-    EXPECT_EQ(TetBatch::widthCapOf("256bits"), 512u);
-    EXPECT_EQ(TetBatch::widthCapOf("-1"), 512u);
-    EXPECT_EQ(TetBatch::widthCapOf(""), 512u);
+    EXPECT_EQ(detail::TetBatch::widthCapOf(nullptr), 512u);
+    EXPECT_EQ(detail::TetBatch::widthCapOf("256"), 256u);
+    EXPECT_EQ(detail::TetBatch::widthCapOf("0"), 0u);
+    EXPECT_EQ(detail::TetBatch::widthCapOf("1024"), 512u);
+    EXPECT_EQ(detail::TetBatch::widthCapOf("avx2"), 512u);
+    EXPECT_EQ(detail::TetBatch::widthCapOf("256bits"), 512u);
+    EXPECT_EQ(detail::TetBatch::widthCapOf("-1"), 512u);
+    EXPECT_EQ(detail::TetBatch::widthCapOf(""), 512u);
 }
 
 
@@ -93,18 +93,18 @@ TEST(TetBatch, QualitiesEqualTetMeasuresOverTheRankedRange)
                          TetQuality::Metric::shape})
     {
         std::vector<double> wide(J.size()), narrow(J.size());
-        TetBatch::qualities(J.size(), J.data(), a2.data(), narrow.data(), m, false);
+        detail::TetBatch::qualities(J.size(), J.data(), a2.data(), narrow.data(), m, false);
         // the AVX-512, the AVX2 and the default build: the same bits
         test::atEachSimdWidth([&](unsigned bits)
         {
             std::vector<double> w(J.size());
-            TetBatch::qualities(J.size(), J.data(), a2.data(), w.data(), m, true);
+            detail::TetBatch::qualities(J.size(), J.data(), a2.data(), w.data(), m, true);
             EXPECT_EQ(w, narrow) << bits << " bits";
         });
-        TetBatch::qualities(J.size(), J.data(), a2.data(), wide.data(), m, true);
+        detail::TetBatch::qualities(J.size(), J.data(), a2.data(), wide.data(), m, true);
         for (std::size_t i = 0; i < J.size(); ++i)
         {
-            const double ref = TetMeasures::quality(J[i], a2[i], m);
+            const double ref = detail::TetMeasures::quality(J[i], a2[i], m);
             EXPECT_NEAR(wide[i], ref, 2e-15*ref) << J[i] << ' ' << a2[i];
         }
     }
@@ -116,7 +116,7 @@ TEST(TetBatch, WorstBatchPutsEachCellsQualityInItsPlace)
     // ranked cells (SIMD), an inverted one and one beyond the lanes' range
     // (J = 1e-35: Worst::quality), each written where asked
     const auto m = TetQuality::Metric::sizeShape;
-    std::vector<TetMeasures::Worst> cells(4, TetMeasures::Worst(m));
+    std::vector<detail::TetMeasures::Worst> cells(4, detail::TetMeasures::Worst(m));
     cells[0].add(0.5, 2.0);
     cells[0].add(2.0, 4.0);
     cells[1].add(0.9, 3.0);
@@ -124,7 +124,7 @@ TEST(TetBatch, WorstBatchPutsEachCellsQualityInItsPlace)
     cells[2].add(1e-35, 3e-23);
     cells[3].add(1.2, 3.5);
     std::vector<double> q(4, -7);
-    WorstBatch finals(m);
+    detail::WorstBatch finals(m);
     for (int i = 3; i >= 0; --i) finals.add(cells[i], &q[i]);
     finals.finish();
     for (int i = 0; i < 4; ++i)

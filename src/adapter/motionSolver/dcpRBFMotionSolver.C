@@ -17,7 +17,7 @@ License
 #include "clockTime.H"
 #include "OFstream.H"
 #include "OSspecific.H"
-#include "TetBatch.hpp"
+#include "SimdWidth.hpp"
 
 #include <numeric>
 
@@ -196,7 +196,7 @@ void Foam::dcpRBFMotionSolver::setThreads() const
             << " (at most AVX2) or 128 (no AVX); unset: the widest the"
             << " processor has" << exit(FatalError);
     }
-    const unsigned width = dcprbf::TetBatch::width();
+    const unsigned width = dcprbf::SimdWidth::bits();
     Info<< typeName << ": quality kernels in "
         << (width >= 512 ? "AVX-512" : width >= 256 ? "AVX2" : "default")
         << " vectors"

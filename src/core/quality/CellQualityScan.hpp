@@ -13,11 +13,11 @@
 // convention, is judged on the cell itself: for references within ~1e-14 of
 // degenerate the two conventions can differ).
 // Tetrahedra (4 vertices) and triangular prisms (6; CellShapes) are stored
-// by their vertices and measured in SIMD lanes (TetBatch; PrismBatch: one
+// by their vertices and measured in SIMD lanes (detail::TetBatch; detail::PrismBatch: one
 // prism per lane, its 18 tetrahedra and its worst in the lane), the other
 // cells by their faces (each cell's faces stored with the cell, reference
 // face and cell centres computed once; their tetrahedra gathered into a
-// TetBatch). The cells are visited in Morton order of their first point
+// detail::TetBatch). The cells are visited in Morton order of their first point
 // (MortonOrder) in blocks, the points renumbered in the order the cells use
 // them; a measurement gathers the current points once into that order: no
 // per-cell allocation, no per-step work on the reference mesh but the
@@ -86,7 +86,7 @@ public:
 
 private:
     //- How a cell is measured: from its vertices (a tetrahedron: one
-    //  measure; a prism: PrismBatch) or from its faces (general)
+    //  measure; a prism: detail::PrismBatch) or from its faces (general)
     enum Kind : unsigned char { general, tetrahedron, prism };
 
     //- The caller's index of each cell, in the order stored (Morton order)
@@ -140,9 +140,9 @@ private:
     //- A thread's scratch space for measureBlock
     struct Scratch
     {
-        TetBatch tets;
-        PrismBatch prisms;
-        WorstBatch finals;
+        detail::TetBatch tets;
+        detail::PrismBatch prisms;
+        detail::WorstBatch finals;
         std::vector<double> buf;
         std::size_t first[blockCells];
 
@@ -176,7 +176,7 @@ private:
     (
         std::size_t g,
         const double* x,
-        TetBatch& batch,
+        detail::TetBatch& batch,
         std::size_t t,
         std::vector<double>& buf
     ) const;

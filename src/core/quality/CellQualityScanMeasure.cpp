@@ -21,7 +21,7 @@ void CellQualityScan::addTets
 (
     const std::size_t g,
     const double* x,
-    TetBatch& batch,
+    detail::TetBatch& batch,
     std::size_t t,
     std::vector<double>& buf
 ) const
@@ -90,8 +90,8 @@ void CellQualityScan::measureBlock
 {
     const double* x0 = points0_.data();
 
-    // The prisms into a PrismBatch, the tetrahedra of the others into a
-    // TetBatch (a tetrahedral cell: one, with its own A: every tetrahedron
+    // The prisms into a detail::PrismBatch, the tetrahedra of the others into a
+    // detail::TetBatch (a tetrahedral cell: one, with its own A: every tetrahedron
     // of its decomposition is an affine image of it)
     std::size_t nTets = 0, nPrisms = 0;
     for (std::size_t c = 0; c < m; ++c)
@@ -137,14 +137,14 @@ void CellQualityScan::measureBlock
         }
     }
 
-    // Measured in SIMD lanes; each cell's worst (TetMeasures::Worst), the
-    // qualities in SIMD lanes again (WorstBatch)
+    // Measured in SIMD lanes; each cell's worst (detail::TetMeasures::Worst), the
+    // qualities in SIMD lanes again (detail::WorstBatch)
     if (nTets) s.tets.measure(metric_, s.finals.wide());
     if (nPrisms) s.prisms.measure(metric_, s.finals.wide());
     for (std::size_t c = 0; c < m; ++c)
     {
         const std::size_t i = i0 + c;
-        TetMeasures::Worst worst(metric_);
+        detail::TetMeasures::Worst worst(metric_);
         if (kind_[i] != prism)
         {
             const std::size_t t1 =

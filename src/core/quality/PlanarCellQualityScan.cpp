@@ -182,7 +182,7 @@ void PlanarCellQualityScan::addMaps
 (
     const std::size_t k,
     const double* x,
-    PlanarMapBatch& batch,
+    detail::PlanarMapBatch& batch,
     std::size_t t
 ) const
 {
@@ -229,14 +229,14 @@ void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide)
             x[2*i] = p[3*std::size_t(pointIds_[i]) + axis0_];
             x[2*i + 1] = p[3*std::size_t(pointIds_[i]) + axis1_];
         }
-        // The triangles and quadrilaterals (PlanarPolygonBatch: one cell
+        // The triangles and quadrilaterals (detail::PlanarPolygonBatch: one cell
         // per SIMD lane); per block of the other cells: the maps into a
-        // PlanarMapBatch (SIMD), each cell's worst, the ranked worst's
+        // detail::PlanarMapBatch (SIMD), each cell's worst, the ranked worst's
         // qualities in SIMD lanes
         triangles_.measure(x, q, metric_, wide);
         quads_.measure(x, q, metric_, wide);
-        PlanarMapBatch maps;
-        WorstBatch finals(metric_, wide);
+        detail::PlanarMapBatch maps;
+        detail::WorstBatch finals(metric_, wide);
         constexpr long blockCells = 64;
         const long n = long(otherCells_.size());
         #pragma omp for schedule(static, 4)
@@ -253,7 +253,7 @@ void PlanarCellQualityScan::measure(const double* p, double* q, const bool wide)
             maps.measure(metric_, wide);
             for (std::size_t k = k0; k < k1; ++k)
             {
-                TetMeasures::Worst worst(metric_);
+                detail::TetMeasures::Worst worst(metric_);
                 for (std::size_t t = mapStart_[k] - m0; t < mapStart_[k + 1] - m0; ++t)
                 {
                     worst.add(maps.J(t), maps.a2(t), maps.key(t));

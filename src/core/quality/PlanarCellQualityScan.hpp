@@ -14,8 +14,8 @@
 // a triangle cell: one map, its own (each triangle of the decomposition is
 // an affine image of it; the same F to round-off). Triangles and
 // quadrilaterals: one cell per SIMD lane from its points to its quality
-// (PlanarPolygonBatch); the other polygons' maps in SIMD lanes
-// (PlanarMapBatch), their final qualities too (WorstBatch): the same
+// (detail::PlanarPolygonBatch); the other polygons' maps in SIMD lanes
+// (detail::PlanarMapBatch), their final qualities too (detail::WorstBatch): the same
 // operations and values.
 // A degenerate reference triangle (quality 1 by TetQuality's convention) is
 // judged in the plane: for references within ~1e-14 of degenerate, or thinner
@@ -92,8 +92,8 @@ private:
 
     //- The triangles and quadrilaterals (nearly every cell of a 2D mesh),
     //  one per SIMD lane
-    PlanarPolygonBatch<3> triangles_;
-    PlanarPolygonBatch<4> quads_;
+    detail::PlanarPolygonBatch<3> triangles_;
+    detail::PlanarPolygonBatch<4> quads_;
 
     //- The other cells (polygons of n >= 5 points)
     std::vector<std::size_t> otherCells_;
@@ -115,7 +115,7 @@ private:
 
     //- Cell otherCells_[k]'s maps for the compact current in-plane points
     //  x into batch from position t
-    void addMaps(std::size_t k, const double* x, PlanarMapBatch& batch, std::size_t t) const;
+    void addMaps(std::size_t k, const double* x, detail::PlanarMapBatch& batch, std::size_t t) const;
 };
 
 } // namespace dcprbf

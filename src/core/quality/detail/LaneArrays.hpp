@@ -10,6 +10,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 class LaneArrays
 {
@@ -53,4 +55,5 @@ private:
     std::vector<double> in_, out_;
 };
 
+} // namespace detail
 } // namespace dcprbf

@@ -9,6 +9,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 struct LaneWorst
 {
@@ -50,4 +52,5 @@ struct LaneWorst
     }
 };
 
+} // namespace detail
 } // namespace dcprbf

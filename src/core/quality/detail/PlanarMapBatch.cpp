@@ -5,6 +5,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 namespace
 {
@@ -46,4 +48,5 @@ void PlanarMapBatch::measure(const TetQuality::Metric metric, const bool wide)
     );
 }
 
+} // namespace detail
 } // namespace dcprbf

@@ -18,6 +18,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 class PlanarMapBatch
 {
@@ -61,4 +63,5 @@ private:
     LaneArrays lanes_{9, 3};
 };
 
+} // namespace detail
 } // namespace dcprbf

@@ -10,6 +10,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 namespace
 {
@@ -228,4 +230,5 @@ void PlanarPolygonBatch<N>::measure
 template class PlanarPolygonBatch<3>;
 template class PlanarPolygonBatch<4>;
 
+} // namespace detail
 } // namespace dcprbf

@@ -25,6 +25,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 template<int N>
 class PlanarPolygonBatch
@@ -88,4 +90,5 @@ private:
 extern template class PlanarPolygonBatch<3>;
 extern template class PlanarPolygonBatch<4>;
 
+} // namespace detail
 } // namespace dcprbf

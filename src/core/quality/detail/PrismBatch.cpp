@@ -8,6 +8,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 namespace
 {
@@ -147,4 +149,5 @@ void PrismBatch::measure(const TetQuality::Metric metric, const bool wide)
     );
 }
 
+} // namespace detail
 } // namespace dcprbf

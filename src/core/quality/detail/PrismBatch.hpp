@@ -26,6 +26,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 class PrismBatch
 {
@@ -101,4 +103,5 @@ private:
     LaneArrays lanes_{36, 41};
 };
 
+} // namespace detail
 } // namespace dcprbf

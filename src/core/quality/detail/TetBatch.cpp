@@ -7,6 +7,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 namespace
 {
@@ -110,4 +112,5 @@ void TetBatch::measure(const TetQuality::Metric metric, const bool wide)
     );
 }
 
+} // namespace detail
 } // namespace dcprbf

@@ -26,6 +26,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 class TetBatch
 {
@@ -100,4 +102,5 @@ private:
     LaneArrays lanes_{18, 3};
 };
 
+} // namespace detail
 } // namespace dcprbf

@@ -57,6 +57,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 namespace tetKernel
 {
 
@@ -351,4 +353,5 @@ void dispatch(const TetQuality::Metric metric, const bool wide, Args... args)
 }
 
 } // namespace tetKernel
+} // namespace detail
 } // namespace dcprbf

@@ -13,6 +13,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 struct TetMeasures
 {
@@ -208,4 +210,5 @@ struct TetMeasures
     }
 };
 
+} // namespace detail
 } // namespace dcprbf

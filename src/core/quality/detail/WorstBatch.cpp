@@ -4,6 +4,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 void WorstBatch::finish()
 {
@@ -19,4 +21,5 @@ void WorstBatch::finish()
     dest_.clear();
 }
 
+} // namespace detail
 } // namespace dcprbf

@@ -13,6 +13,8 @@
 
 namespace dcprbf
 {
+namespace detail
+{
 
 class WorstBatch
 {
@@ -52,4 +54,5 @@ private:
     std::vector<double*> dest_;
 };
 
+} // namespace detail
 } // namespace dcprbf
