@@ -28,17 +28,13 @@ namespace
 
 dcprbf::TetQuality::Metric readMetric(const Foam::dictionary& dict)
 {
-    const Foam::dictionary& coeffs = dict.optionalSubDict("dcpRBFFvMeshCoeffs");
-    if (&coeffs == &dict)
-    {
-        return dcprbf::TetQuality::Metric::sizeShape;
-    }
-    const Foam::dcpRBFDictReader r(coeffs);
-    r.checkKeywords({"qualityMetric"});
+    const Foam::dictionary* coeffs = dict.findDict("dcpRBFFvMeshCoeffs");
+    const Foam::dcpRBFDictReader r(coeffs ? *coeffs : Foam::dictionary::null);
+    r.checkKeywordsOf("dcpRBFFvMeshCoeffs");
     return r.getEnum
     (
-        "qualityMetric", Foam::dcpRBFSettings::metricNames,
-        dcprbf::TetQuality::Metric::sizeShape
+        Foam::dcpRBFKeywords::get("dcpRBFFvMeshCoeffs", "qualityMetric"),
+        Foam::dcpRBFSettings::metricNames
     );
 }
 

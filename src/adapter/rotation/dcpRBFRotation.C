@@ -70,7 +70,13 @@ Foam::dcpRBFRotation::dcpRBFRotation
     const dcprbf::Points& evalPoints
 )
 :
-    active_(dcpRBFDictReader(coeffs).getSwitch("rotationInterpolation", false)),
+    active_
+    (
+        dcpRBFDictReader(coeffs).getSwitch
+        (
+            dcpRBFKeywords::get("dcpRBFCoeffs", "rotationInterpolation")
+        )
+    ),
     projection_(projection),
     boundary_(boundary),
     evalPoints_(evalPoints)
@@ -95,11 +101,11 @@ Foam::dcpRBFRotation::dcpRBFRotation
     const dictionary& dict =
         coeffs.found("rotation") ? coeffs.subDict("rotation") : dictionary::null;
     const dcpRBFDictReader r(dict);
-    r.checkKeywords({"bodies", "centre", "blendProfile", "blendSlope", "blendRamp"});
+    r.checkKeywordsOf("rotation");
     readBodies(mesh, dict, settings);
-    profile_ = r.getEnum("blendProfile", blendProfileNames, blendProfile::star);
-    slope_ = r.getScalar("blendSlope", 0.25, 0, 10, true);
-    ramp_ = r.getScalar("blendRamp", 0.1, 0, 1, true);
+    profile_ = r.getEnum(dcpRBFKeywords::get("rotation", "blendProfile"), blendProfileNames);
+    slope_ = r.getScalar(dcpRBFKeywords::get("rotation", "blendSlope"));
+    ramp_ = r.getScalar(dcpRBFKeywords::get("rotation", "blendRamp"));
     if (profile_ != blendProfile::star)
     {
         for (const word k : {"blendSlope", "blendRamp"})

@@ -56,7 +56,7 @@ void Foam::dcpRBFRotation::readBodies
                     << " dictionary { patches (...); centre (x y z); }"
                     << exit(FatalIOError);
             }
-            dcpRBFDictReader(e.dict()).checkKeywords({"patches", "centre"});
+            dcpRBFDictReader(e.dict()).checkKeywordsOf("bodies");
             groups.append
             (
                 dcpRBFSettings::matchPatches

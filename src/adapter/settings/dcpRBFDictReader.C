@@ -89,6 +89,98 @@ void Foam::dcpRBFDictReader::checkKeywords(const wordList& known) const
 }
 
 
+void Foam::dcpRBFDictReader::checkKeywordsOf(const word& dictionaryName) const
+{
+    checkKeywords(dcpRBFKeywords::names(dictionaryName));
+}
+
+
+void Foam::dcpRBFDictReader::checkChoices
+(
+    const dcpRBFKeyword& k,
+    const wordList& words
+)
+{
+    const wordList choices(k.choiceList());
+    bool same = words.size() == choices.size();
+    for (const word& w : words)
+    {
+        same = same && choices.found(w);
+    }
+    if (!same)
+    {
+        FatalErrorInFunction
+            << "Keyword " << k.name << ": the table's choices " << choices
+            << " are not the reader's " << words << abort(FatalError);
+    }
+}
+
+
+bool Foam::dcpRBFDictReader::getSwitch(const dcpRBFKeyword& k) const
+{
+    return getSwitch(k.name, k.deflt != 0);
+}
+
+
+Foam::label Foam::dcpRBFDictReader::getChoice(const dcpRBFKeyword& k) const
+{
+    return getChoice(k.name, k.choiceList(), k.defaultWord);
+}
+
+
+Foam::scalar Foam::dcpRBFDictReader::getScalar(const dcpRBFKeyword& k) const
+{
+    return getScalar(k, k.deflt, k.lo);
+}
+
+
+Foam::scalar Foam::dcpRBFDictReader::getScalar
+(
+    const dcpRBFKeyword& k,
+    const scalar deflt,
+    const scalar lo
+) const
+{
+    dcpRBFKeyword bounds(k);
+    bounds.lo = lo;
+    const string range("a number in " + bounds.rangeText());
+    const token* t = single(k.name, range);
+    if (t && !t->isNumber())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << k.name << " must be " << range.c_str()
+            << "; got " << *t << exit(FatalIOError);
+    }
+    const scalar x(t ? t->number() : deflt);
+    if (!bounds.within(x))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << k.name << " must be " << range.c_str()
+            << ", got " << x << exit(FatalIOError);
+    }
+    return x;
+}
+
+
+Foam::label Foam::dcpRBFDictReader::getLabel(const dcpRBFKeyword& k) const
+{
+    return getLabel(k, label(k.deflt));
+}
+
+
+Foam::label Foam::dcpRBFDictReader::getLabel
+(
+    const dcpRBFKeyword& k,
+    const label deflt
+) const
+{
+    return getLabel
+    (
+        k.name, deflt, label(k.lo), k.bounded() ? label(k.hi) : labelMax
+    );
+}
+
+
 bool Foam::dcpRBFDictReader::getSwitch
 (
     const word& keyword,
@@ -139,38 +231,6 @@ Foam::label Foam::dcpRBFDictReader::getChoice
             << allowed << exit(FatalIOError);
     }
     return i;
-}
-
-
-Foam::scalar Foam::dcpRBFDictReader::getScalar
-(
-    const word& keyword,
-    const scalar deflt,
-    const scalar lo,
-    const scalar hi,
-    const bool lowIncluded
-) const
-{
-    const string range
-    (
-        "a number in " + string(lowIncluded ? "[" : "(") + Foam::name(lo)
-      + ", " + Foam::name(hi) + "]"
-    );
-    const token* t = single(keyword, range);
-    if (t && !t->isNumber())
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Keyword " << keyword << " must be " << range.c_str()
-            << "; got " << *t << exit(FatalIOError);
-    }
-    const scalar x(t ? t->number() : deflt);
-    if (!((x > lo || (lowIncluded && x == lo)) && x <= hi))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Keyword " << keyword << " must be " << range.c_str()
-            << ", got " << x << exit(FatalIOError);
-    }
-    return x;
 }
 
 

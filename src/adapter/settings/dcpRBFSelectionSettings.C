@@ -40,26 +40,13 @@ Foam::dcpRBFSelectionSettings::trialPointsNames
     {trialPoints::all, "all"}
 });
 
-const Foam::wordList Foam::dcpRBFSelectionSettings::keywords
-({
-    "selection", "tolerance", "minPoints", "maxPoints", "doubleEdged",
-    "selectOn", "reselectTolerance", "nSwap", "protectSteps", "swapRule",
-    "swapBlendSteps", "trialPoints", "trialBackoff", "trialQualityDrop"
-});
-
 namespace
 {
-    //- The keywords of selection dynamic alone, and of its swapRule
-    //  errorGuided alone
-    const Foam::wordList dynamicKeywords
-    ({
-        "nSwap", "protectSteps", "swapRule", "swapBlendSteps", "trialPoints",
-        "trialBackoff", "trialQualityDrop"
-    });
-    const Foam::wordList errorGuidedKeywords
-    ({
-        "swapBlendSteps", "trialPoints", "trialBackoff", "trialQualityDrop"
-    });
+    //- A keyword of controlPoints
+    const Foam::dcpRBFKeyword& key(const char* name)
+    {
+        return Foam::dcpRBFKeywords::get("controlPoints", name);
+    }
 }
 
 
@@ -68,30 +55,47 @@ namespace
 Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
 {
     const dcpRBFDictReader r(dict);
-    r.checkKeywords(keywords);
+    r.checkKeywordsOf("controlPoints");
+    using scope = dcpRBFKeyword::scope;
+    const wordList keywords(dcpRBFKeywords::names("controlPoints"));
+    const wordList dynamicKeywords
+    (
+        dcpRBFKeywords::namesOnly("controlPoints", scope::dynamic)
+    );
+    const wordList errorGuidedKeywords
+    (
+        dcpRBFKeywords::namesOnly("controlPoints", scope::errorGuided)
+    );
 
-    selection = r.getEnum("selection", modeNames, mode::all);
-    tolerance = r.getScalar("tolerance", 1e-3, 0, 1);
-    minPoints = r.getLabel("minPoints", 0, 0, labelMax);
-    maxPoints = r.getLabel("maxPoints", max(2000, minPoints), 1, labelMax);
+    selection = r.getEnum(key("selection"), modeNames);
+    tolerance = r.getScalar(key("tolerance"));
+    minPoints = r.getLabel(key("minPoints"));
+    maxPoints = r.getLabel(key("maxPoints"), max(label(key("maxPoints").deflt), minPoints));
     if (minPoints > maxPoints)
     {
         FatalIOErrorInFunction(dict)
             << "Keyword minPoints (" << minPoints << ") exceeds maxPoints ("
             << maxPoints << ")" << exit(FatalIOError);
     }
-    doubleEdged = r.getSwitch("doubleEdged", false);
-    selectOn = r.getEnum("selectOn", targetNames, target::displacement);
-    reselectTolerance =
-        r.getScalar("reselectTolerance", max(min(10*tolerance, 1.0), tolerance), tolerance, GREAT, true);
-    swapRule = r.getEnum("swapRule", ruleNames, rule::errorGuided);
-    nSwap = r.getLabel("nSwap", swapRule == rule::errorGuided ? 4 : 1, 0, 1000);
-    protectSteps = r.getLabel("protectSteps", 3, 0, 1000000);
-    swapBlendSteps = r.getLabel("swapBlendSteps", 4, 1, 1000);
-    trialAt = r.getEnum("trialPoints", trialPointsNames, trialPoints::window);
-    trialBackoff = r.getLabel("trialBackoff", trialBackoff, 1, maxTrialWait);
-    trialQualityDrop =
-        r.getScalar("trialQualityDrop", trialQualityDrop, 0, 1);
+    doubleEdged = r.getSwitch(key("doubleEdged"));
+    selectOn = r.getEnum(key("selectOn"), targetNames);
+    // (default and lower bound from tolerance: the table says so)
+    {
+        dcpRBFKeyword k(key("reselectTolerance"));
+        k.lowIncluded = true;
+        reselectTolerance =
+            r.getScalar(k, max(min(10*tolerance, 1.0), tolerance), tolerance);
+    }
+    swapRule = r.getEnum(key("swapRule"), ruleNames);
+    nSwap = r.getLabel
+    (
+        key("nSwap"), swapRule == rule::errorGuided ? label(key("nSwap").deflt) : 1
+    );
+    protectSteps = r.getLabel(key("protectSteps"));
+    swapBlendSteps = r.getLabel(key("swapBlendSteps"));
+    trialAt = r.getEnum(key("trialPoints"), trialPointsNames);
+    trialBackoff = r.getLabel(key("trialBackoff"));
+    trialQualityDrop = r.getScalar(key("trialQualityDrop"));
     for (const word& k : errorGuidedKeywords)
     {
         if (swapRule == rule::nearest && dict.found(k))

@@ -33,6 +33,20 @@ const Foam::Enum<dcprbf::TetQuality::Metric> Foam::dcpRBFSettings::metricNames
 });
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A keyword of dcpRBFCoeffs
+const Foam::dcpRBFKeyword& key(const char* name)
+{
+    return Foam::dcpRBFKeywords::get("dcpRBFCoeffs", name);
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
@@ -65,14 +79,7 @@ const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
             << "        supportRadius 2.5;" << nl << "    }" << nl
             << exit(FatalIOError);
     }
-    dcpRBFDictReader(dict).checkKeywords
-    ({
-        "movingPatches", "staticPatches", "function", "supportRadius",
-        "polynomial", "controlPoints", "qualityMetric", "qualityFloor",
-        "qualityFloorAction", "guardIterations", "boundaryCorrection",
-        "evaluationMemoryMB", "pointsPerThread", "rotationInterpolation",
-        "rotation"
-    });
+    dcpRBFDictReader(dict).checkKeywordsOf("dcpRBFCoeffs");
     return dict;
 }
 
@@ -259,10 +266,13 @@ dcprbf::RadialKernel Foam::dcpRBFSettings::readKernel
     const pointField& points0
 ) const
 {
-    const auto& n = dcprbf::RadialKernel::names();
-    const wordList names(dcpRBFCompat::makeList<word>(n));
-    const label i = r.getChoice("function", names, "WendlandC2");
-    return dcprbf::RadialKernel::fromName(names[i], readRadius(r.dict(), mesh, points0));
+    const dcpRBFKeyword& k = key("function");
+    dcpRBFDictReader::checkChoices
+    (
+        k, dcpRBFCompat::makeList<word>(dcprbf::RadialKernel::names())
+    );
+    const word name(k.choiceList()[r.getChoice(k)]);
+    return dcprbf::RadialKernel::fromName(name, readRadius(r.dict(), mesh, points0));
 }
 
 
@@ -281,7 +291,7 @@ Foam::dcpRBFSettings::dcpRBFSettings
     ),
     staticPatchIDs_(readPatches(dict, "staticPatches", mesh.boundaryMesh(), true)),
     kernel_(readKernel(dcpRBFDictReader(dict), mesh, points0)),
-    polynomial_(dcpRBFDictReader(dict).getSwitch("polynomial", true))
+    polynomial_(dcpRBFDictReader(dict).getSwitch(key("polynomial")))
 {
     const dcpRBFDictReader r(dict);
     checkPatchLists(dict, mesh.boundaryMesh());
@@ -305,20 +315,14 @@ Foam::dcpRBFSettings::dcpRBFSettings
         selection_ = dcpRBFSelectionSettings(dict.subDict("controlPoints"));
     }
 
-    metric_ = r.getEnum
-    (
-        "qualityMetric", metricNames, dcprbf::TetQuality::Metric::sizeShape
-    );
-    qualityFloor_ = r.getScalar("qualityFloor", 0, -1, 1 - SMALL);
-    floorAction_ = r.getEnum("qualityFloorAction", floorActionNames, floorAction::warn);
-    guardIterations_ = r.getLabel("guardIterations", 5, 0, 1000);
-    boundaryCorrection_ = r.getSwitch("boundaryCorrection", true);
+    metric_ = r.getEnum(key("qualityMetric"), metricNames);
+    qualityFloor_ = r.getScalar(key("qualityFloor"));
+    floorAction_ = r.getEnum(key("qualityFloorAction"), floorActionNames);
+    guardIterations_ = r.getLabel(key("guardIterations"));
+    boundaryCorrection_ = r.getSwitch(key("boundaryCorrection"));
     evaluationMemoryAuto_ = !dict.found("evaluationMemoryMB");
-    evaluationMemoryMB_ = r.getLabel("evaluationMemoryMB", 1024, 0, 1000000);
-    pointsPerThread_ = r.getLabel
-    (
-        "pointsPerThread", label(dcprbf::pointsPerThread), 0, labelMax
-    );
+    evaluationMemoryMB_ = r.getLabel(key("evaluationMemoryMB"));
+    pointsPerThread_ = r.getLabel(key("pointsPerThread"));
 }
 
 

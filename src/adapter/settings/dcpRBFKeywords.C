@@ -1,0 +1,325 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF: radial-basis-function mesh motion with dynamic control points
+-------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
+\*---------------------------------------------------------------------------*/
+
+#include "dcpRBFKeywords.H"
+#include "error.H"
+#include "dcpRBFSelectionSettings.H"
+#include "DynamicList.H"
+
+#include <vector>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using K = Foam::dcpRBFKeyword;
+using Foam::dcpRBFSelectionSettings;
+using type = K::valueType;
+using scope = K::scope;
+
+//- Unbounded above
+constexpr double unbounded = 1e15;
+
+const char* const coeffs = "dcpRBFCoeffs";
+const char* const cp = "controlPoints";
+const char* const rot = "rotation";
+const char* const body = "bodies";
+const char* const fvMesh = "dcpRBFFvMeshCoeffs";
+
+const char* const metrics = "sizeShape size shape";
+
+//- The table, in the reference's order (docs/keywords.md); made at its
+//  first use (static data of other files may read it)
+const std::vector<K>& table()
+{
+    static const std::vector<K> t
+    {
+    // dcpRBFCoeffs
+    K::other
+    (
+        coeffs, "movingPatches", type::patches, "required",
+        "a non-empty list; each entry matches at least one patch or group;"
+        " no `empty` or coupled patch; no patch also in `staticPatches`",
+        "patches whose points follow their pointDisplacement condition"
+    ),
+    K::other
+    (
+        coeffs, "staticPatches", type::patches, "required",
+        "may be `()`; the same rules as `movingPatches`",
+        "patches whose points stay put"
+    ),
+    K::other
+    (
+        coeffs, "supportRadius", type::length, "required",
+        "> 0, from 1e-9 to 1e9 times the mesh's bounding-box diagonal, and"
+        " reaching at least one cell centre from the moving patches",
+        "the kernel's radius (a global function's length scale)"
+    ),
+    K::choice
+    (
+        coeffs, "function", "WendlandC2",
+        "WendlandC0 WendlandC2 WendlandC4 WendlandC6 TPS Gaussian IMQ",
+        "the radial basis function"
+    ),
+    K::onOff
+    (
+        coeffs, "polynomial", true,
+        "add the linear polynomial (affine motions exact)"
+    ).alsoNeeds("`TPS` needs `true`"),
+    K::other
+    (
+        coeffs, "controlPoints", type::subDict, "`{ selection all; }`",
+        "the keywords of [`controlPoints`](#controlpoints)",
+        "how the control points are chosen"
+    ),
+    K::choice
+    (
+        coeffs, "qualityMetric", "sizeShape", metrics,
+        "the cell quality measured, logged and guarded"
+    ),
+    K::real
+    (
+        coeffs, "qualityFloor", 0, -1, false, 1, false,
+        "in-step guard: points join while the minimum quality is below it"
+    ).defaultIs("`0` (act on inverted cells)"),
+    K::choice
+    (
+        coeffs, "qualityFloorAction", "warn", "warn stop",
+        "when the floor is not met after guardIterations: warn or stop"
+    ),
+    K::integer
+    (
+        coeffs, "guardIterations", 5, 0, 1000,
+        "at most this many guard additions per step"
+    ),
+    K::onOff
+    (
+        coeffs, "boundaryCorrection", true,
+        "blend the boundary points' interpolation error into the volume"
+    ),
+    K::integer
+    (
+        coeffs, "evaluationMemoryMB", 1024, 0, 1000000,
+        "memory per process for stored kernel matrices"
+    ).defaultIs("unset: 1024, used once the control set has settled"),
+    K::integer
+    (
+        coeffs, "pointsPerThread", 250000, 0, unbounded,
+        "one OpenMP thread per this many mesh points (0: all cores)"
+    ),
+    K::onOff
+    (
+        coeffs, "rotationInterpolation", false,
+        "large rotations: the bodies' rigid rotations blended into the volume"
+    ),
+    K::other
+    (
+        coeffs, "rotation", type::subDict, "none (`{}`)",
+        "the keywords of [`rotation`](#rotation); only with"
+        " `rotationInterpolation true`",
+        "the bodies and the blend of rotationInterpolation"
+    ),
+
+    // controlPoints
+    K::choice
+    (
+        cp, "selection", "all", "all greedy dynamic",
+        "all boundary points, a greedy set, or a greedy set with swaps"
+    ),
+    K::real
+    (
+        cp, "tolerance", 1e-3, 0, false, 1, true,
+        "the greedy selection's relative boundary error"
+    ).only(scope::reduced),
+    K::integer
+    (
+        cp, "minPoints", 0, 0, unbounded, "at least this many control points"
+    ).only(scope::reduced).alsoNeeds
+    (
+        "at most `maxPoints` and at most the boundary points of"
+        " `movingPatches` and `staticPatches`"
+    ),
+    K::integer
+    (
+        cp, "maxPoints", 2000, 1, unbounded, "at most this many control points"
+    ).only(scope::reduced)
+     .defaultIs("`2000`, or `minPoints` if that is larger")
+     .alsoNeeds("with the polynomial at least dim+1"),
+    K::onOff
+    (
+        cp, "doubleEdged", false,
+        "each greedy iteration also adds the worst point of opposite error"
+    ).only(scope::reduced),
+    K::choice
+    (
+        cp, "selectOn", "displacement", "displacement unit",
+        "select on the first displacement, or on a unit one"
+    ).only(scope::reduced),
+    K::real
+    (
+        cp, "reselectTolerance", 1e-2, 0, false, unbounded, true,
+        "at every step the worst point joins while the error exceeds it"
+    ).only(scope::reduced)
+     .defaultIs("10 times `tolerance`, at most 1")
+     .alsoNeeds("at least `tolerance`"),
+    K::choice
+    (
+        cp, "swapRule", "errorGuided", "errorGuided nearest",
+        "trial swaps kept if they help, or the paper's rule"
+    ).only(scope::dynamic),
+    K::integer
+    (
+        cp, "nSwap", 4, 0, 1000, "swaps (errorGuided: trial swaps) per step"
+    ).only(scope::dynamic).defaultIs("`4` (`errorGuided`), `1` (`nearest`)"),
+    K::integer
+    (
+        cp, "swapBlendSteps", 4, 1, 1000,
+        "a kept swap is phased in over this many steps"
+    ).only(scope::errorGuided),
+    K::choice
+    (
+        cp, "trialPoints", "window", "window all",
+        "where a trial's mesh is made"
+    ).only(scope::errorGuided),
+    K::integer
+    (
+        cp, "trialBackoff", 4, 1, dcpRBFSelectionSettings::maxTrialWait,
+        "steps the next trial waits after an undone one"
+    ).only(scope::errorGuided),
+    K::real
+    (
+        cp, "trialQualityDrop", 0.05, 0, false, 1, true,
+        "a wait ends early when the minimum quality falls by more than this"
+    ).only(scope::errorGuided),
+    K::integer
+    (
+        cp, "protectSteps", 3, 0, 1000000,
+        "a point that joined fewer steps ago is not removed"
+    ).only(scope::dynamic),
+
+    // rotation
+    K::other
+    (
+        rot, "centre", type::position, "the centroid of the body's points",
+        "any point; not together with `bodies` (each body then has its own)",
+        "the single body's centre of rotation"
+    ),
+    K::other
+    (
+        rot, "bodies", type::subDict, "all `movingPatches`, one body",
+        "one sub-dictionary per body, at least one"
+        " ([below](#bodies-entries)); every moving patch in exactly one body;"
+        " bodies must not share points",
+        "several bodies, each with its own rigid motion"
+    ),
+    K::choice
+    (
+        rot, "blendProfile", "star", "star log",
+        "the blend's shape: the walls' room, or the radial ring"
+    ),
+    K::real
+    (
+        rot, "blendSlope", 0.25, 0, true, 10, true,
+        "the largest slope of the ring's radii with the angle"
+    ).alsoNeeds("only with `blendProfile star`"),
+    K::real
+    (
+        rot, "blendRamp", 0.1, 0, true, 1, true,
+        "the share of the blend where its slope rises from 0"
+    ).alsoNeeds("only with `blendProfile star`"),
+
+    // an entry of bodies
+    K::other
+    (
+        body, "patches", type::patches, "required",
+        "a non-empty list of patches of `movingPatches`; a patch in one body"
+        " only",
+        "the patches that move together as this body"
+    ),
+    K::other
+    (
+        body, "centre", type::position, "the centroid of the body's points",
+        "any point", "the body's centre of rotation"
+    ),
+
+    // dcpRBFFvMeshCoeffs
+    K::choice
+    (
+        fvMesh, "qualityMetric", "sizeShape", metrics,
+        "the metric of the cellQuality field"
+    )
+    };
+    return t;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::UList<Foam::dcpRBFKeyword>& Foam::dcpRBFKeywords::all()
+{
+    static const UList<dcpRBFKeyword> list
+    (
+        const_cast<dcpRBFKeyword*>(table().data()), label(table().size())
+    );
+    return list;
+}
+
+
+const Foam::dcpRBFKeyword& Foam::dcpRBFKeywords::get
+(
+    const word& dictionary,
+    const word& name
+)
+{
+    for (const dcpRBFKeyword& k : all())
+    {
+        if (dictionary == k.dictionary && name == k.name)
+        {
+            return k;
+        }
+    }
+    FatalErrorInFunction
+        << "No keyword " << name << " of " << dictionary << " in dcpRBF's"
+        << " keyword table" << abort(FatalError);
+    return all()[0];
+}
+
+
+Foam::wordList Foam::dcpRBFKeywords::names(const word& dictionary)
+{
+    DynamicList<word> list;
+    for (const dcpRBFKeyword& k : all())
+    {
+        if (dictionary == k.dictionary) list.append(k.name);
+    }
+    return wordList(list);
+}
+
+
+Foam::wordList Foam::dcpRBFKeywords::namesOnly
+(
+    const word& dictionary,
+    const dcpRBFKeyword::scope s
+)
+{
+    DynamicList<word> list;
+    for (const dcpRBFKeyword& k : all())
+    {
+        if (dictionary == k.dictionary && k.allowedWith >= s)
+        {
+            list.append(k.name);
+        }
+    }
+    return wordList(list);
+}
+
+
+// ************************************************************************* //
