@@ -7,7 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFQualityRegion.H"
-#include "MortonOrder.hpp"
+#include "dcpRBFScanOrder.H"
 #include "PointTree.hpp"
 #include "Pstream.H"
 #include "emptyPolyPatch.H"
@@ -16,130 +16,6 @@ License
 
 #include <algorithm>
 #include <limits>
-
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- A cell's reference centre (the average of its points), core coordinates
-Foam::FixedList<Foam::scalar, 3> centreOf
-(
-    const Foam::labelListList& cellPoints,
-    const Foam::dcpRBFPlaneProjection& projection,
-    const Foam::pointField& points0,
-    const Foam::label celli
-)
-{
-    const Foam::labelList& cp = cellPoints[celli];
-    Foam::vector c(Foam::Zero);
-    for (const Foam::label pi : cp) c += points0[pi];
-    c /= cp.size();
-    Foam::FixedList<Foam::scalar, 3> x;
-    projection.toCore(c, x.data());
-    return x;
-}
-
-
-//- The cells in the order the flat scan visits them (Morton order of the
-//  first point of their first face, as dcprbf::CellQualityScan keys them):
-//  it then writes the qualities in sequence, not scattered
-Foam::labelList scanOrder
-(
-    const Foam::polyMesh& mesh,
-    const Foam::pointField& points0,
-    const std::vector<Foam::label>& cells
-)
-{
-    std::vector<double> key;
-    key.reserve(3*cells.size());
-    for (const Foam::label celli : cells)
-    {
-        const Foam::point& x = points0[mesh.faces()[mesh.cells()[celli][0]][0]];
-        key.insert(key.end(), {x.x(), x.y(), x.z()});
-    }
-    const std::vector<int> order(dcprbf::mortonOrder(key.data(), cells.size()));
-    Foam::labelList ordered(Foam::label(cells.size()));
-    forAll(ordered, i)
-    {
-        ordered[i] = cells[order[i]];
-    }
-    return ordered;
-}
-
-} // End anonymous namespace
-
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::dcpRBFQualityRegion::findOuterCells
-(
-    const polyMesh& mesh,
-    const dcpRBFPlaneProjection& projection,
-    const pointField& points0,
-    const dcprbf::Points& sources,
-    const scalar radius,
-    const bool affineBeyond,
-    const std::vector<char>& inRegion
-)
-{
-    // Per point: can a kernel, a condition or a correction move it other
-    // than by the polynomial? (every point where that is not known)
-    std::vector<char> near(std::size_t(mesh.nPoints()), !affineBeyond);
-    if (affineBeyond && sources.rows() > 0)
-    {
-        const dcprbf::PointTree tree(sources);
-        #pragma omp parallel for schedule(dynamic, 4096)
-        for (label pointi = 0; pointi < mesh.nPoints(); ++pointi)
-        {
-            FixedList<scalar, 3> x;
-            projection.toCore(points0[pointi], x.data());
-            near[pointi] = tree.anyWithin(x.data(), radius);
-        }
-    }
-    const labelListList& cellPoints = mesh.cellPoints();
-    std::vector<label> outer;
-    label firstAffine = -1;
-    for (label celli = 0; celli < mesh.nCells(); ++celli)
-    {
-        if (inRegion[celli])
-        {
-            continue;
-        }
-        bool moves = false;
-        for (const label pi : cellPoints[celli])
-        {
-            if (near[pi])
-            {
-                moves = true;
-                break;
-            }
-        }
-        if (moves)
-        {
-            outer.push_back(celli);
-        }
-        else
-        {
-            if (firstAffine < 0) firstAffine = celli;
-            ++nAffine_;
-        }
-    }
-    outerCells_ = scanOrder(mesh, points0, outer);
-    if (nAffine_ > 0)
-    {
-        // last: the cell that stands for the nAffine_ moved affinely
-        outerCells_.append(firstAffine);
-    }
-    outerCentres_.setSize(outerCells_.size());
-    forAll(outerCells_, i)
-    {
-        outerCentres_[i] =
-            centreOf(cellPoints, projection, points0, outerCells_[i]);
-    }
-}
-
 
 // * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
 
@@ -243,7 +119,7 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
         {
             inside[celli] = tree.anyWithin
             (
-                centreOf(cellPoints, projection, points0, celli).data(), radius
+                dcpRBFScanOrder::centre(cellPoints, projection, points0, celli).data(), radius
             );
         }
     }
@@ -252,27 +128,23 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     {
         if (inside[celli]) found.push_back(celli);
     }
-    cells_ = scanOrder(mesh, points0, found);
+    cells_ = dcpRBFScanOrder::of(mesh, points0, found);
     centres_.setSize(cells_.size());
     forAll(cells_, i)
     {
-        centres_[i] = centreOf(cellPoints, projection, points0, cells_[i]);
+        centres_[i] = dcpRBFScanOrder::centre(cellPoints, projection, points0, cells_[i]);
     }
     quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
 
-    findOuterCells
+    outer_.reset
     (
-        mesh, projection, points0, sources, radius, affineBeyond, inside
+        new dcpRBFOuterCells
+        (
+            mesh, projection, points0, sources, radius, affineBeyond, inside,
+            metric
+        )
     );
-    outerQuality_.reset
-    (
-        new dcpRBFCellQuality(mesh, outerCells_, points0, metric)
-    );
-    nChecked_ = returnReduce
-    (
-        cells_.size() + outerCells_.size() + max(nAffine_ - 1, label(0)),
-        sumOp<label>()
-    );
+    nChecked_ = returnReduce(cells_.size() + outer_->nChecked(), sumOp<label>());
 }
 
 
@@ -460,23 +332,11 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
 
     // The check: the region and the other cells whose points can move
     // (the last of them standing for nAffine_ if any moved affinely)
-    const scalarField qo(outerQuality_->compute(p));
     label outerInverted = 0;
     scalar outerSum = 0;
     rankedCell lowestHere({GREAT, 0, 0, 0});
     if (leastAt >= 0) lowestHere = ranked(leastAt);
-    forAll(qo, i)
-    {
-        const label weight =
-            (nAffine_ > 0 && i == qo.size() - 1) ? nAffine_ : 1;
-        outerInverted += weight*(qo[i] <= 0);
-        outerSum += weight*qo[i];
-        const rankedCell c
-        ({
-            qo[i], outerCentres_[i][0], outerCentres_[i][1], outerCentres_[i][2]
-        });
-        if (c < lowestHere) lowestHere = c;
-    }
+    outer_->accumulate(p, outerInverted, outerSum, lowestHere);
     s.nChecked = nChecked_;
     s.checkedInverted = s.nInverted + returnReduce(outerInverted, sumOp<label>());
     s.checkedMean =
