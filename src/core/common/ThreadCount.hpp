@@ -12,12 +12,10 @@ namespace dcprbf
 int threadsPerRank(int coresAvailable, int ranksOnNode);
 
 //- Mesh points per thread by default: a process with fewer points uses one
-//  thread. A
-//  step on a smaller mesh is a series of short parallel loops (well under a
-//  millisecond each), and when other processes share the cores every one
-//  of them waits for a thread the scheduler has put aside: measured here on
-//  a 26k-point mesh with three other busy processes on two cores, 2 threads
-//  took 16.6 ms a step (median) where 1 took 2.3 ms
+//  thread. A step on a smaller mesh is a series of short parallel loops
+//  (well under a millisecond each), and when other processes share the
+//  cores every one of them waits for a thread the scheduler has put aside,
+//  several times longer than the loop itself
 constexpr long pointsPerThread = 250000;
 
 //- The threads for a process of nPoints mesh points that may use up to

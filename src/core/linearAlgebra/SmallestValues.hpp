@@ -5,9 +5,9 @@
 // 1.5 k + 64 of them do not exceed; one pass keeps the values at or below it
 // and nth_element picks the k smallest among those. When fewer than k pass
 // the bound (a sample that misjudged it), the values are copied and
-// selected whole, as before: the result is the same multiset either way.
-// On a trial window's 2 % of a fine mesh's 10.4M cell qualities: one pass
-// and a selection among ~300k values, not a copy and a selection of 10.4M.
+// selected whole: the result is the same multiset either way. For a trial
+// window (a few % of the cells) that is one pass and a selection among a
+// few % of the values, not a copy and a selection of all of them.
 #pragma once
 
 #include <cstddef>
