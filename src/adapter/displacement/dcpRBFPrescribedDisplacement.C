@@ -270,10 +270,9 @@ bool Foam::dcpRBFPrescribedDisplacement::finish(const bool measured)
     // the interior front and back twins have the same displacement by
     // construction: one value per distinct point, the correction by the
     // same nearest boundary point; the boundary points get their prescribed
-    // values below, as before.) Then the
-    // listed patches' rule, the same on every processor: moving points
-    // where prescribed (also where a static patch's condition says
-    // otherwise), static points in place
+    // values below.) Then the listed patches' rule, the same on every
+    // processor: moving points where prescribed (also where a static
+    // patch's condition says otherwise), static points in place
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
     bool unchanged = measured;
     if (measured)
