@@ -87,179 +87,6 @@ void Foam::dcpRBFControlPoints::greedy(const dcprbf::Values& d)
 }
 
 
-Foam::dictionary Foam::dcpRBFControlPoints::selectedWith
-(
-    const polyMesh& mesh,
-    const dcpRBFSettings& settings,
-    const label nCandidates
-)
-{
-    const auto names = [&](const labelList& ids)
-    {
-        wordList sorted(ids.size());
-        forAll(ids, i)
-        {
-            sorted[i] = mesh.boundaryMesh()[ids[i]].name();
-        }
-        Foam::sort(sorted);
-        string s;
-        for (const word& name : sorted)
-        {
-            s += (s.empty() ? "" : " ") + name;
-        }
-        return "(" + s + ")";
-    };
-    const dcpRBFSelectionSettings& sel = settings.selection();
-    dictionary d;
-    // as strings: written quoted, read back as written
-    const auto put = [&](const word& key, const std::string& value)
-    {
-        d.set(key, string(value));
-    };
-    put("movingPatches", names(settings.movingPatchIDs()));
-    put("staticPatches", names(settings.staticPatchIDs()));
-    put("boundaryPoints", Foam::name(nCandidates));
-    put("function", settings.kernel().name());
-    put("supportRadius", Foam::name(settings.kernel().radius()));
-    put("polynomial", Switch(settings.polynomial()).c_str());
-    put("selection", dcpRBFSelectionSettings::modeNames[sel.selection]);
-    if (sel.selection != dcpRBFSelectionSettings::mode::all)
-    {
-        put("tolerance", Foam::name(sel.tolerance));
-        put("minPoints", Foam::name(sel.minPoints));
-        put("maxPoints", Foam::name(sel.maxPoints));
-        put("doubleEdged", Switch(sel.doubleEdged).c_str());
-        put("selectOn", dcpRBFSelectionSettings::targetNames[sel.selectOn]);
-    }
-    return d;
-}
-
-
-Foam::string Foam::dcpRBFControlPoints::changedSettings() const
-{
-    const dictionary* was = state_.findDict("selectedWith");
-    string changes;
-    const auto add = [&](const string& what)
-    {
-        changes += (changes.empty() ? "" : ", ") + what;
-    };
-    if (!was)
-    {
-        // a state written before the settings were kept: the boundary's
-        // size alone can be checked
-        for (const label i : state_.get<labelList>("indices"))
-        {
-            if (i < 0 || i >= boundary_.size())
-            {
-                add
-                (
-                    "the boundary points (a control point's index " + Foam::name(i)
-                  + " beyond this run's " + Foam::name(boundary_.size()) + ")"
-                );
-                break;
-            }
-        }
-        return changes;
-    }
-    for (const entry& e : selectedWith_)
-    {
-        const word& key = e.keyword();
-        const string now(selectedWith_.get<string>(key));
-        const string before(was->getOrDefault<string>(key, "(none)"));
-        if (now != before)
-        {
-            add(key + " " + before + " -> " + now);
-        }
-    }
-    for (const entry& e : *was)
-    {
-        if (!selectedWith_.found(e.keyword()))
-        {
-            add(e.keyword() + " " + was->get<string>(e.keyword()) + " -> (none)");
-        }
-    }
-    return changes;
-}
-
-
-void Foam::dcpRBFControlPoints::storeState(dictionary& state) const
-{
-    state.set("selectedWith", selectedWith_);
-    state.set("ready", ready_);
-    state.set("trialWait", trialWait_);
-    state.set("trialBackoff", trialBackoff_);
-    state.set("trialQuality", trialQuality_);
-    state.set("indices", dcpRBFCompat::makeList<label>(set_.indices()));
-    state.set("ages", dcpRBFCompat::makeList<label>(set_.ages()));
-    if (blendFrom_)
-    {
-        state.set("blendStep", blendStep_);
-        state.set("blendFromIndices", dcpRBFCompat::makeList<label>(blendFrom_->indices));
-        state.set("blendFromAges", dcpRBFCompat::makeList<label>(blendFrom_->ages));
-    }
-    else
-    {
-        state.remove("blendStep");
-        state.remove("blendFromIndices");
-        state.remove("blendFromAges");
-    }
-}
-
-
-bool Foam::dcpRBFControlPoints::readState()
-{
-    if (!state_.found("indices") || !state_.get<bool>("ready"))
-    {
-        return false;
-    }
-    const string changes(changedSettings());
-    if (!changes.empty())
-    {
-        WarningInFunction
-            << "The restart state " << state_.objectPath() << " was selected"
-            << " with other settings: " << changes.c_str() << "." << nl
-            << "    The control set is selected anew (at the first step with"
-            << " motion, as at the start of a run) and the error-guided"
-            << " trials' schedule starts over: the run does not continue"
-            << " the one that wrote the state exactly. To continue it"
-            << " exactly, restart with the settings it was written with."
-            << endl;
-        return false;
-    }
-    const labelList indices(state_.get<labelList>("indices"));
-    const labelList ages(state_.get<labelList>("ages"));
-    set_.reset(std::vector<Eigen::Index>(indices.begin(), indices.end()));
-    set_.setAges(std::vector<int>(ages.begin(), ages.end()));
-    trialWait_ = state_.getOrDefault<label>("trialWait", 0);
-    trialBackoff_ = state_.getOrDefault<label>
-    (
-        "trialBackoff",
-        settings_.selection().trialBackoff
-    );
-    trialQuality_ = state_.getOrDefault<scalar>("trialQuality", 1);
-    if (state_.found("blendStep"))
-    {
-        blendStep_ = state_.get<label>("blendStep");
-        const labelList from(state_.get<labelList>("blendFromIndices"));
-        const labelList fromAges(state_.get<labelList>("blendFromAges"));
-        blendFrom_.reset
-        (
-            new dcprbf::DynamicControlSet::State
-            (
-                set_.freshState
-                (
-                    std::vector<Eigen::Index>(from.begin(), from.end()),
-                    std::vector<int>(fromAges.begin(), fromAges.end())
-                )
-            )
-        );
-    }
-    Info<< "dcpRBF: restarting with " << set_.size() << " control points from "
-        << state_.objectPath() << endl;
-    return true;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dcpRBFControlPoints::dcpRBFControlPoints
@@ -289,11 +116,13 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
     nKept_(0),
     leaving_(Eigen::RowVector3d::Zero()),
     leavingReach_(0),
-    blendStep_(0),
-    trialWait_(0),
-    trialBackoff_(settings.selection().trialBackoff),
-    trialQuality_(1),
-    backedOff_(false),
+    blend_(settings.selection().swapBlendSteps),
+    schedule_
+    (
+        settings.selection().trialBackoff,
+        dcpRBFSelectionSettings::maxTrialWait,
+        settings.selection().trialQualityDrop
+    ),
     selectedWith_(selectedWith(mesh, settings, boundary.size())),
     state_
     (
@@ -336,55 +165,6 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
 }
 
 
-Foam::string Foam::dcpRBFControlPoints::whatToDo(const dcprbf::Error& e) const
-{
-    const std::string what(e.what());
-    const dcprbf::RadialKernel& k = settings_.kernel();
-    const string radius(" (supportRadius " + Foam::name(k.radius()) + ")");
-    if
-    (
-        what.find("not positive definite") != std::string::npos
-     || what.find("numerically dependent") != std::string::npos
-    )
-    {
-        if (!k.compact())
-        {
-            return
-                "function " + k.name() + " is global: supportRadius is its"
-                " shape length" + radius + ", and its matrix is singular to"
-                " round-off when that is large against the spacing of the"
-                " boundary points. Take supportRadius of a few spacings of"
-                " the boundary points, or a compactly supported function"
-                " (function WendlandC2; supportRadius several times the"
-                " largest displacement)";
-        }
-        return
-            "the kernel matrix is singular to round-off: supportRadius"
-          + radius + " is very large against the spacing of the boundary"
-            " points (take selection greedy, which selects the points the"
-            " interpolant needs, or a smaller supportRadius), or two"
-            " boundary points of movingPatches and staticPatches coincide"
-            " (a patch listed twice under other names or groups, or the two"
-            " sides of an interface: list each once)";
-    }
-    if
-    (
-        what.find("collinear") != std::string::npos
-     || what.find("coplanar") != std::string::npos
-    )
-    {
-        return
-            "the candidates are the points of movingPatches and"
-            " staticPatches; with the polynomial they must span the space"
-            " (not all on one line in 2D, not all in one plane in 3D): add a"
-            " patch off that plane to staticPatches, or set polynomial false";
-    }
-    return "check movingPatches, staticPatches and controlPoints";
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
 bool Foam::dcpRBFControlPoints::select(const dcprbf::Values& d)
 {
     if (ready_)
@@ -415,11 +195,9 @@ void Foam::dcpRBFControlPoints::solve(const dcprbf::Values& d)
 {
     try
     {
-        if (blendFrom_)
+        if (blend_.active())
         {
-            const scalar w =
-                scalar(blendStep_)/settings_.selection().swapBlendSteps;
-            set_.solveBlended(d, *blendFrom_, w);
+            set_.solveBlended(d, blend_.from(), blend_.weight());
         }
         else
         {
@@ -489,15 +267,6 @@ dcprbf::Values Foam::dcpRBFControlPoints::boundaryValues() const
 }
 
 
-bool Foam::dcpRBFControlPoints::swapsBeforeSolve() const
-{
-    const dcpRBFSelectionSettings& s = settings_.selection();
-    return
-        s.selection == dcpRBFSelectionSettings::mode::dynamic
-     && s.swapRule == dcpRBFSelectionSettings::rule::nearest;
-}
-
-
 Foam::label Foam::dcpRBFControlPoints::reselect
 (
     const dcprbf::Values& d,
@@ -545,53 +314,6 @@ Foam::label Foam::dcpRBFControlPoints::reselect
             << " this warning is given once." << endl;
     }
     return nAdded;
-}
-
-
-void Foam::dcpRBFControlPoints::swap
-(
-    const dcpRBFQualityRegion::summary& q,
-    label& nAdded,
-    label& nRemoved
-)
-{
-    nAdded = 0;
-    nRemoved = 0;
-    const dcpRBFSelectionSettings& s = settings_.selection();
-    if (s.selection != dcpRBFSelectionSettings::mode::dynamic || s.swapRule != dcpRBFSelectionSettings::rule::nearest)
-    {
-        return;
-    }
-    const auto leaveNear = [&](const dcpRBFQualityRegion::rankedCell& c)
-    {
-        const Eigen::RowVector3d x(c[1], c[2], c[3]);
-        if (set_.removeNearest(x) < 0) return false;
-        updated_ = true;
-        return true;
-    };
-    const label n = min(s.nSwap, min(q.worst.size(), q.best.size()));
-    for (label k = 0; k < n; ++k)
-    {
-        if (set_.size() < s.maxPoints)
-        {
-            nAdded += addNear(q.worst[k]);
-            nRemoved += leaveNear(q.best[k]);
-        }
-        else if
-        (
-            // at maxPoints: both in one update, at constant size
-            set_.swapNearest
-            (
-                Eigen::RowVector3d(q.worst[k][1], q.worst[k][2], q.worst[k][3]),
-                Eigen::RowVector3d(q.best[k][1], q.best[k][2], q.best[k][3])
-            )
-        )
-        {
-            ++nAdded;
-            ++nRemoved;
-            updated_ = true;
-        }
-    }
 }
 
 
@@ -644,23 +366,12 @@ void Foam::dcpRBFControlPoints::endStep(const scalar minQuality)
     if (stepFrom_)
     {
         // this step's swaps were kept
-        trialBackoff_ = settings_.selection().trialBackoff;
+        schedule_.kept();
         stepFrom_.reset();
     }
     set_.nextStep();
-    if (backedOff_)
-    {
-        trialQuality_ = minQuality;
-        backedOff_ = false;
-    }
-    if (trialWait_ > 0)
-    {
-        --trialWait_;
-    }
-    if (blendFrom_ && ++blendStep_ >= settings_.selection().swapBlendSteps)
-    {
-        blendFrom_.reset();
-    }
+    schedule_.endStep(minQuality);
+    blend_.advance();
     if (time_.writeTime())
     {
         // refactorized from the indices, as a restart does (restarts are
@@ -675,10 +386,7 @@ void Foam::dcpRBFControlPoints::endStep(const scalar minQuality)
                 set_.refactorize();
                 updated_ = false;
             }
-            if (blendFrom_)
-            {
-                *blendFrom_ = set_.freshState(blendFrom_->indices, blendFrom_->ages);
-            }
+            blend_.refresh(set_);
         }
         catch (const dcprbf::Error& e)
         {

@@ -26,6 +26,19 @@ Foam::dcpRBFRotation::blendProfileNames
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::dcpRBFRotation::storeState(dictionary& state) const
+{
+    List<vector> rotations(motions_.size());
+    forAll(rotations, b)
+    {
+        const Eigen::Vector3d& w = motions_[b].rotation;
+        rotations[b] = vector(w.x(), w.y(), w.z());
+    }
+    state.set("bodies", bodyNames_);
+    state.set("rotations", rotations);
+}
+
+
 void Foam::dcpRBFRotation::readState()
 {
     motions_.assign(bodyNames_.size(), dcprbf::RigidMotion());
@@ -122,17 +135,10 @@ Foam::dcpRBFRotation::dcpRBFRotation
 
     state_.reset
     (
-        new IOdictionary
+        new dcpRBFStateDictionary
         (
-            IOobject
-            (
-                "dcpRBFRotationState",
-                mesh.time().timeName(),
-                "uniform",
-                mesh,
-                IOobject::READ_IF_PRESENT,
-                IOobject::AUTO_WRITE
-            )
+            "dcpRBFRotationState", mesh,
+            [this](dictionary& state) { storeState(state); }
         )
     );
     readState();
@@ -147,7 +153,6 @@ Foam::dcpRBFRotation::dcpRBFRotation
 dcprbf::Values Foam::dcpRBFRotation::fit(const dcprbf::Values& d)
 {
     const dcprbf::Points& x = boundary_.points();
-    List<vector> rotations(bodyNames_.size());
     std::vector<dcprbf::RigidMotion> turns(bodyNames_.size());
     forAll(bodyNames_, b)
     {
@@ -164,7 +169,6 @@ dcprbf::Values Foam::dcpRBFRotation::fit(const dcprbf::Values& d)
             dcprbf::fitRigidMotion(xb, db, projection_.dim(), last)
            .about(centres_[b]);
         const Eigen::Vector3d& w = motions_[b].rotation;
-        rotations[b] = vector(w.x(), w.y(), w.z());
         if ((w - last).norm() > 0.5*constant::mathematical::pi)
         {
             WarningInFunction
@@ -180,8 +184,6 @@ dcprbf::Values Foam::dcpRBFRotation::fit(const dcprbf::Values& d)
         turns[b] = motions_[b];
         turns[b].translation.setZero();
     }
-    state_->set("bodies", bodyNames_);
-    state_->set("rotations", rotations);
 
     // The rest: prescribed minus each body's rotation about its centre
     // (its translation and its non-rigid motion)

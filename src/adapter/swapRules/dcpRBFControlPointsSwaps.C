@@ -6,37 +6,78 @@ License
     GPL-3.0-or-later: see the LICENSE file at the top of the repository.
 -------------------------------------------------------------------------------
 Description
-    dcpRBFControlPoints, continued: the trial swaps of swapRule errorGuided
-    (propose, keep, undo) and the start and end of their blend.
+    dcpRBFControlPoints, continued: the swaps of swapRule nearest and the
+    trial swaps of swapRule errorGuided (propose, keep, undo), the start
+    and end of their blend.
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFControlPoints.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+bool Foam::dcpRBFControlPoints::swapsBeforeSolve() const
+{
+    const dcpRBFSelectionSettings& s = settings_.selection();
+    return
+        s.selection == dcpRBFSelectionSettings::mode::dynamic
+     && s.swapRule == dcpRBFSelectionSettings::rule::nearest;
+}
+
+
+void Foam::dcpRBFControlPoints::swap
+(
+    const dcpRBFQualityRegion::summary& q,
+    label& nAdded,
+    label& nRemoved
+)
+{
+    nAdded = 0;
+    nRemoved = 0;
+    const dcpRBFSelectionSettings& s = settings_.selection();
+    if (s.selection != dcpRBFSelectionSettings::mode::dynamic || s.swapRule != dcpRBFSelectionSettings::rule::nearest)
+    {
+        return;
+    }
+    const auto leaveNear = [&](const dcpRBFQualityRegion::rankedCell& c)
+    {
+        const Eigen::RowVector3d x(c[1], c[2], c[3]);
+        if (set_.removeNearest(x) < 0) return false;
+        updated_ = true;
+        return true;
+    };
+    const label n = min(s.nSwap, min(q.worst.size(), q.best.size()));
+    for (label k = 0; k < n; ++k)
+    {
+        if (set_.size() < s.maxPoints)
+        {
+            nAdded += addNear(q.worst[k]);
+            nRemoved += leaveNear(q.best[k]);
+        }
+        else if
+        (
+            // at maxPoints: both in one update, at constant size
+            set_.swapNearest
+            (
+                Eigen::RowVector3d(q.worst[k][1], q.worst[k][2], q.worst[k][3]),
+                Eigen::RowVector3d(q.best[k][1], q.best[k][2], q.best[k][3])
+            )
+        )
+        {
+            ++nAdded;
+            ++nRemoved;
+            updated_ = true;
+        }
+    }
+}
+
+
 bool Foam::dcpRBFControlPoints::canTrial(const bool rescue) const
 {
     const dcpRBFSelectionSettings& s = settings_.selection();
     return
-        ready_ && (rescue || (!blendFrom_ && trialWait_ == 0)) && s.nSwap > 0
+        ready_ && (rescue || (!blend_.active() && !schedule_.waiting())) && s.nSwap > 0
      && s.selection == dcpRBFSelectionSettings::mode::dynamic
      && s.swapRule == dcpRBFSelectionSettings::rule::errorGuided;
-}
-
-
-bool Foam::dcpRBFControlPoints::endWaitIfWorse(const scalar minQuality)
-{
-    if
-    (
-        trialWait_ > 0
-     && trialQuality_ - minQuality > settings_.selection().trialQualityDrop
-    )
-    {
-        // the mesh has got worse since the set was found to fit it
-        trialWait_ = 0;
-        return true;
-    }
-    return false;
 }
 
 
@@ -135,15 +176,14 @@ Foam::label Foam::dcpRBFControlPoints::endTrials
     {
         // the set fits the motion: try again later, less often while it does
         stepFrom_.reset();
-        backOff();
+        schedule_.backOff();
         return 0;
     }
     // stepFrom_ stays until endStep() (the swaps confirmed: the back-off
     // starts over) or abandonSwaps()
     if (blend && settings_.selection().swapBlendSteps > 1)
     {
-        blendFrom_.reset(new dcprbf::DynamicControlSet::State(*stepFrom_));
-        blendStep_ = 1;
+        blend_.start(*stepFrom_);
         solve(d);
     }
     return kept;
@@ -158,9 +198,9 @@ void Foam::dcpRBFControlPoints::abandonSwaps(const dcprbf::Values& d)
     }
     set_.restore(*stepFrom_);
     stepFrom_.reset();
-    blendFrom_.reset();
+    blend_.stop();
     updated_ = true;
-    backOff();
+    schedule_.backOff();
     solve(d);
 }
 
@@ -168,9 +208,7 @@ void Foam::dcpRBFControlPoints::abandonSwaps(const dcprbf::Values& d)
 Foam::dcpRBFControlPoints::blendState
 Foam::dcpRBFControlPoints::finishBlend(const dcprbf::Values& d)
 {
-    blendState b;
-    b.from = std::move(blendFrom_);
-    b.step = blendStep_;
+    blendState b(blend_.take());
     updated_ = true;
     solve(d);
     return b;
@@ -183,19 +221,10 @@ void Foam::dcpRBFControlPoints::resumeBlend
     const dcprbf::Values& d
 )
 {
-    blendFrom_ = std::move(b.from);
-    blendStep_ = b.step;
+    blend_.resume(std::move(b));
     updated_ = true;
     solve(d);
 }
 
-
-void Foam::dcpRBFControlPoints::backOff()
-{
-    trialWait_ = trialBackoff_;
-    backedOff_ = true;
-    trialBackoff_ =
-        min(2*trialBackoff_, dcpRBFSelectionSettings::maxTrialWait);
-}
 
 // ************************************************************************* //

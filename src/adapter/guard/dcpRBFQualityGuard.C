@@ -4,48 +4,35 @@
 License
     This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
     GPL-3.0-or-later: see the LICENSE file at the top of the repository.
--------------------------------------------------------------------------------
-Description
-    dcpRBFMotionSolver, continued: the mesh quality after a step and the
-    quality guard.
 \*---------------------------------------------------------------------------*/
 
-#include "dcpRBFMotionSolver.H"
+#include "dcpRBFQualityGuard.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFQualityGuard::dcpRBFQualityGuard
+(
+    const polyMesh& mesh,
+    const dcpRBFSettings& settings,
+    dcpRBFControlPoints& controlPoints,
+    dcpRBFInterpolation& interpolation,
+    dcpRBFQualityMeasurement& quality,
+    const bool rotation,
+    const dcpRBFPrescribedDisplacement& prescribed
+)
+:
+    mesh_(mesh),
+    settings_(settings),
+    controlPoints_(controlPoints),
+    interpolation_(interpolation),
+    quality_(quality),
+    warnings_(mesh, settings, controlPoints, rotation, prescribed)
+{}
+
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dcpRBFMotionSolver::measureRegion(const pointField& p)
-{
-    // the qualities into the last measurement's storage
-    lastQuality_ = region_.measure
-    (
-        p, max(label(1), settings_.selection().nSwap),
-        std::move(lastQuality_.quality)
-    );
-}
-
-
-void Foam::dcpRBFMotionSolver::measureQuality(dcpRBFStepLog::record& r)
-{
-    currentPoints(lastPoints_);
-    measureLastPoints(r);
-}
-
-
-void Foam::dcpRBFMotionSolver::measureLastPoints(dcpRBFStepLog::record& r)
-{
-    pointsMeasured_ = true;
-    measureRegion(lastPoints_);
-    ++nMeasurements_;
-    r.nCells = lastQuality_.nChecked;
-    r.nInverted = lastQuality_.checkedInverted;
-    r.minQuality = lastQuality_.checkedMin;
-    r.meanQuality = lastQuality_.checkedMean;
-    r.regionMin = lastQuality_.minQuality;
-}
-
-
-void Foam::dcpRBFMotionSolver::guardQuality
+void Foam::dcpRBFQualityGuard::apply
 (
     const dcprbf::Values& d,
     dcpRBFStepLog::record& r
@@ -54,11 +41,11 @@ void Foam::dcpRBFMotionSolver::guardQuality
     const scalar floor = settings_.qualityFloor();
     for (label iter = 0; ; ++iter)
     {
-        const dcpRBFQualityRegion::summary& q = lastQuality_;
+        const dcpRBFQualityRegion::summary& q = quality_.last();
 
         if (q.checkedMin >= floor || !q.hasLowest)
         {
-            shortfallSteps_ = 0;
+            warnings_.floorMet();
             break;
         }
         if
@@ -68,8 +55,8 @@ void Foam::dcpRBFMotionSolver::guardQuality
          || !controlPoints_.addNear(q.lowest)
         )
         {
-            const word t(mesh().time().timeName());
-            const string why(guardShortfall(iter));
+            const word t(mesh_.time().timeName());
+            const string why(warnings_.guardShortfall(iter));
             if (settings_.onFloorFailure() == dcpRBFSettings::floorAction::stop)
             {
                 FatalErrorInFunction
@@ -79,7 +66,8 @@ void Foam::dcpRBFMotionSolver::guardQuality
                     << " inverted cells). Stopping (qualityFloorAction stop)."
                     << exit(FatalError);
             }
-            if (inFull(shortfallSteps_))
+            label nShort = 0;
+            if (warnings_.shortfallInFull(nShort))
             {
                 WarningInFunction
                     << "Time " << t << ": minimum cell quality " << q.checkedMin
@@ -88,11 +76,12 @@ void Foam::dcpRBFMotionSolver::guardQuality
                     << "; continuing (qualityFloorAction warn; under a flow"
                        " solver, qualityFloorAction stop ends the run here)"
                     << (
-                           shortfallSteps_ > 1
+                           nShort > 1
                          ? ". Short of the floor for "
-                           + Foam::name(shortfallSteps_)
+                           + Foam::name(nShort)
                            + " steps in a row: this warning in full every "
-                           + Foam::name(warningRepeat) + " steps"
+                           + Foam::name(dcpRBFQualityWarnings::warningRepeat)
+                           + " steps"
                          : string()
                        ).c_str()
                     << endl;
@@ -101,31 +90,12 @@ void Foam::dcpRBFMotionSolver::guardQuality
         }
         ++r.nGuard;
         controlPoints_.solve(d);
-        r.boundaryError = interpolateDisplacement(d);
-        measureQuality(r);
+        r.boundaryError = interpolation_.interpolate(d);
+        quality_.measure(r);
     }
 
-    warnInverted(r);
-    warnLowQuality(r);
-}
-
-
-const Foam::dcpRBFQualityRegion::summary&
-Foam::dcpRBFMotionSolver::currentQuality()
-{
-    const pointField& p = mesh().points();
-    bool same = lastPoints_.size() == p.size();
-    for (label i = 0; same && i < p.size(); ++i)
-    {
-        same = (p[i] == lastPoints_[i]);
-    }
-    if (!returnReduce(same, andOp<bool>()))
-    {
-        measureRegion(p);
-        lastPoints_ = p;
-        pointsMeasured_ = false;     // the mesh's points: none of ours
-    }
-    return lastQuality_;
+    warnings_.warnInverted(r);
+    warnings_.warnLowQuality(r);
 }
 
 

@@ -4,17 +4,35 @@
 License
     This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
     GPL-3.0-or-later: see the LICENSE file at the top of the repository.
--------------------------------------------------------------------------------
-Description
-    dcpRBFMotionSolver, continued: what the guard's shortfall and an
-    inverted mesh tell the user, from the settings in use.
 \*---------------------------------------------------------------------------*/
 
-#include "dcpRBFMotionSolver.H"
+#include "dcpRBFQualityWarnings.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFQualityWarnings::dcpRBFQualityWarnings
+(
+    const polyMesh& mesh,
+    const dcpRBFSettings& settings,
+    const dcpRBFControlPoints& controlPoints,
+    const bool rotation,
+    const dcpRBFPrescribedDisplacement& prescribed
+)
+:
+    mesh_(mesh),
+    settings_(settings),
+    controlPoints_(controlPoints),
+    rotation_(rotation),
+    prescribed_(prescribed),
+    invertedSteps_(0),
+    shortfallSteps_(0),
+    lowQualityWarned_(false)
+{}
+
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::string Foam::dcpRBFMotionSolver::guardShortfall(const label iter) const
+Foam::string Foam::dcpRBFQualityWarnings::guardShortfall(const label iter) const
 {
     const label maxN = settings_.selection().maxPoints;
     const label nCandidates = controlPoints_.candidates().rows();
@@ -34,7 +52,7 @@ Foam::string Foam::dcpRBFMotionSolver::guardShortfall(const label iter) const
             " few spacings, or function WendlandC2"
         )
       + (
-            slipCorrection_.active()
+            prescribed_.slipWalls()
           ? string
             (
                 "; sliding (slip) walls near the body: a larger radius carries"
@@ -44,7 +62,7 @@ Foam::string Foam::dcpRBFMotionSolver::guardShortfall(const label iter) const
           : string()
         )
       + (
-            rotation_.active()
+            rotation_
           ? ")"
           : "; for large rotations rotationInterpolation true)"
         )
@@ -61,7 +79,7 @@ Foam::string Foam::dcpRBFMotionSolver::guardShortfall(const label iter) const
         + "; where more points do not raise the minimum, raise"
           " supportRadius"
         + (
-              slipCorrection_.active()
+              prescribed_.slipWalls()
             ? " or, with sliding walls near the body, list them under"
               " staticPatches)"
             : ")"
@@ -71,13 +89,13 @@ Foam::string Foam::dcpRBFMotionSolver::guardShortfall(const label iter) const
 }
 
 
-bool Foam::dcpRBFMotionSolver::inFull(label& count)
+bool Foam::dcpRBFQualityWarnings::inFull(label& count)
 {
     return count++ % warningRepeat == 0;
 }
 
 
-bool Foam::dcpRBFMotionSolver::dynamicCouldHelp() const
+bool Foam::dcpRBFQualityWarnings::dynamicCouldHelp() const
 {
     // greedy short of the boundary points (with all of them the
     // interpolation is exact there already: dynamic has fewer)
@@ -87,7 +105,7 @@ bool Foam::dcpRBFMotionSolver::dynamicCouldHelp() const
 }
 
 
-void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r)
+void Foam::dcpRBFQualityWarnings::warnInverted(const dcpRBFStepLog::record& r)
 {
     if (!r.nInverted)
     {
@@ -98,13 +116,13 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r)
     {
         // what else could help, from what is not set already
         string hint;
-        if (!rotation_.active())
+        if (!rotation_)
         {
             hint =
                 string(dynamicCouldHelp() ? ", use selection dynamic" : "")
               + (settings_.qualityFloor() > 0 ? "" : ", set a qualityFloor (e.g. 0.2)")
               + (
-                    slipCorrection_.active() && settings_.polynomial()
+                    prescribed_.slipWalls() && settings_.polynomial()
                   ? ", with sliding (slip) walls polynomial false (the linear"
                     " part carries the body's rotation or translation out to"
                     " them)"
@@ -115,17 +133,17 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r)
                 " may itself have moved too far in one step: check its motion.)";
         }
         WarningInFunction
-            << "Time " << mesh().time().timeName() << ": "
+            << "Time " << mesh_.time().timeName() << ": "
             << r.nInverted << " inverted or degenerate cells"
             << " (quality <= 0, minimum " << r.minQuality << "). The mesh is"
             << " invalid: "
             << (
-                   rotation_.active()
+                   rotation_
                  ? "rotationInterpolation: the twist between the bodies and the"
                    " static patches is too large for the cells there (check"
                    " each body's centre is its pivot; refine the cells between"
                    " body and walls, or move the walls away)."
-                 : slipCorrection_.active()
+                 : prescribed_.slipWalls()
                  ? "reduce the motion per step; sliding (slip, symmetry) walls"
                    " near the moving patches: list those the body does not"
                    " touch under staticPatches (their points then stay put),"
@@ -135,9 +153,9 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r)
                  : "reduce the motion per step, enlarge supportRadius"
                )
             << (
-                   selfMoved_.size()
+                   prescribed_.selfMoved().size()
                  ? ", list the patches moved by their own conditions ("
-                   + selfMovedNames() + ") under movingPatches (the cells"
+                   + prescribed_.selfMovedNames() + ") under movingPatches (the cells"
                    " next to them do not follow them)"
                  : string()
                ).c_str()
@@ -155,7 +173,7 @@ void Foam::dcpRBFMotionSolver::warnInverted(const dcpRBFStepLog::record& r)
 }
 
 
-void Foam::dcpRBFMotionSolver::warnLowQuality(const dcpRBFStepLog::record& r)
+void Foam::dcpRBFQualityWarnings::warnLowQuality(const dcpRBFStepLog::record& r)
 {
     if
     (
@@ -167,7 +185,7 @@ void Foam::dcpRBFMotionSolver::warnLowQuality(const dcpRBFStepLog::record& r)
     }
     lowQualityWarned_ = true;
     WarningInFunction
-        << "Time " << mesh().time().timeName() << ": the minimum cell quality"
+        << "Time " << mesh_.time().timeName() << ": the minimum cell quality"
         << " fell to " << r.minQuality << " (1: as the reference mesh's"
         << " cells; said once). The motion is squeezing cells: enlarge"
         << " supportRadius (several times the largest displacement), set a"

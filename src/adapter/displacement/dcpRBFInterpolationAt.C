@@ -6,26 +6,26 @@ License
     GPL-3.0-or-later: see the LICENSE file at the top of the repository.
 -------------------------------------------------------------------------------
 Description
-    dcpRBFMotionSolver, continued: a trial swap's mesh made at some points
+    dcpRBFInterpolation, continued: a trial swap's mesh made at some points
     alone, the same values there as the whole mesh's.
 \*---------------------------------------------------------------------------*/
 
-#include "dcpRBFMotionSolver.H"
+#include "dcpRBFInterpolation.H"
 
 #include <algorithm>
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::dcpRBFMotionSolver::interpolateAt
+bool Foam::dcpRBFInterpolation::interpolateAt
 (
     const dcprbf::Values& d,
     const labelUList& points,
     scalar& error
 )
 {
-    // Restricted where every step of interpolateDisplacement() is either
+    // Restricted where every step of interpolate() is either
     // the point's own (the product's row, the prescribed value, the
-    // boundary correction, the 2D pair) or reads finishedPoints_ alone (the
+    // boundary correction, the 2D pair) or reads the finished points alone (the
     // patches' conditions and constraints, the sliding walls' change and
     // its blend, the processors' synchronisation): those are made too.
     // Restricted on every processor or on none (the constraints exchange
@@ -40,7 +40,7 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
         return false;
     }
     // the distinct rows of the interior points among them and of
-    // finishedPoints_ (those once, at the first trial: marked 1 for good),
+    // the finished points (those once, at the first trial: marked 1 for good),
     // ascending
     const dcpRBFBoundaryPoints::pointKind* kind = boundaryPoints_.kinds().cdata();
     const auto addRows = [&](const labelUList& pts, const char mark)
@@ -63,7 +63,7 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
     {
         rowMarks_.resize(distinct_.points().rows(), 0);
         trialRows_.clear();
-        addRows(finishedPoints_, 1);
+        addRows(prescribed_.finishedPoints(), 1);
         finishedRows_ = trialRows_;
     }
     trialRows_.clear();
@@ -120,23 +120,23 @@ bool Foam::dcpRBFMotionSolver::interpolateAt
     {
         return false;
     }
-    insertPrescribed(trialDisplacement_);
+    prescribed_.insert(trialDisplacement_);
 
     // the correction and the constraints on the trial's field, in place of
     // the displacement's (exchanged, not copied)
     disp.swap(trialDisplacement_);
-    error = correctInterpolated(d);
+    error = correct(d);
     disp.swap(trialDisplacement_);
 
     // the points: 2D pairs over the whole field, else each point alone
     if (twoDPoints_.required())
     {
-        twoDPoints_.move(points0(), trialDisplacement_, trialPoints_);
+        twoDPoints_.move(points0_, trialDisplacement_, trialPoints_);
     }
     else
     {
         trialPoints_.setSize(disp.size());
-        const pointField& p0 = points0();
+        const pointField& p0 = points0_;
         for (const label pointi : points)
         {
             trialPoints_[pointi] = p0[pointi] + trialDisplacement_[pointi];

@@ -6,19 +6,19 @@ License
     GPL-3.0-or-later: see the LICENSE file at the top of the repository.
 -------------------------------------------------------------------------------
 Description
-    dcpRBFMotionSolver, continued: the error-guided trial swaps, judged on
-    the mesh of a window of cells (dcpRBFTrialWindow), made at the window's
-    points alone (dcpRBFMotionSolverTrialMesh.C), before or after the
-    step's full measurement (dcpRBFMotionSolverTrialChecks.C).
+    dcpRBFErrorGuidedSwaps, continued: the trial swaps, judged on the mesh
+    of a window of cells (dcpRBFTrialWindow), made at the window's points
+    alone where it can be (dcpRBFInterpolation::interpolateAt).
 \*---------------------------------------------------------------------------*/
 
+#include "dcpRBFErrorGuidedSwaps.H"
 #include "dcpRBFMotionSolver.H"
 #include "dcpRBFTrialWindow.H"
 #include "OStringStream.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::dcpRBFMotionSolver::trySwaps
+Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
 (
     const dcprbf::Values& d,
     dcpRBFStepLog::record& r,
@@ -26,21 +26,21 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
 )
 {
     // Rescue: without swaps the mesh has inverted cells; the trials do not
-    // wait after fruitless ones, go on while they help (up to
-    // rescueSwapFactor nSwap) and the swaps apply at once (no blend: an
-    // inverted mesh has no smooth motion to keep)
-    const bool rescue = measured && lastQuality_.nInverted > 0;
+    // wait after fruitless ones, go on while they help (dcpRBFTrialSchedule)
+    // and the swaps apply at once (no blend: an inverted mesh has no smooth
+    // motion to keep)
+    const bool rescue = measured && quality_.last().nInverted > 0;
     if
     (
         !controlPoints_.canTrial(rescue)
-     || lastQuality_.worst.empty()
-     || lastQuality_.minQuality >= 1 - 1e-12
+     || quality_.last().worst.empty()
+     || quality_.last().minQuality >= 1 - 1e-12
     )
     {
         return 0;
     }
     const label nTrials =
-        (rescue ? rescueSwapFactor : 1)*settings_.selection().nSwap;
+        dcpRBFTrialSchedule::nTrials(rescue, settings_.selection().nSwap);
     const bool atWindow =
         settings_.selection().trialAt == dcpRBFSelectionSettings::trialPoints::window;
     r.rescue = rescue;
@@ -49,33 +49,33 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
     // if measured, else of the last step's mesh) and those around the
     // leaving points
     const label nWindow =
-        max(minTrialWindow, label(trialWindowFraction*lastQuality_.nCells));
+        max(minTrialWindow, label(trialWindowFraction*quality_.last().nCells));
     dcpRBFTrialWindow window
     (
-        mesh(), region_, lastQuality_.quality, nWindow, points0()
+        mesh_, region_, quality_.last().quality, nWindow, points0_
     );
     // the mesh of the set kept so far: at every point (complete), or, once
     // a trial made at the window's points alone is kept, at those
     pointField current;
     if (measured)
     {
-        current = lastPoints_;
+        current = quality_.lastPoints();
     }
     else
     {
-        currentPoints(current);
+        quality_.currentPoints(current);
     }
     dcpRBFQualityRegion::rankedCell worst
     (
-        measured ? lastQuality_.worst[0] : window.worst(current)
+        measured ? quality_.last().worst[0] : window.worst(current)
     );
     // unmeasured: the window's minimum without swaps, at least the mesh's;
     // an inverted cell there: the mesh is measured and rescued instead
-    // (solve())
+    // (afterInterpolate())
     const scalar noSwapWindowMin = worst[0];
     if (!measured && noSwapWindowMin <= 0)
     {
-        measureWhole(r, &current);
+        quality_.measureTimed(r, &current);
         return 0;
     }
     bool complete = true;
@@ -86,7 +86,7 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
     // some mesh was made at the window's points alone
     bool windowed = false;
     const vectorField noSwapField(pointDisplacement_.primitiveField());
-    const bool noSwapMeasured = pointsMeasured_;
+    const bool noSwapMeasured = quality_.measured();
     const dcpRBFStepLog::record noSwapRecord(r);
 
     // The mesh of the current evaluator at these of the window's points
@@ -95,14 +95,14 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
     pointField full;
     const auto meshOfSet = [&](const labelUList& pts) -> const pointField&
     {
-        if (atWindow && interpolateAt(d, pts, error))
+        if (atWindow && interpolation_.interpolateAt(d, pts, error))
         {
             windowed = true;
-            return trialPoints_;
+            return interpolation_.trialPoints();
         }
-        error = interpolateDisplacement(d);
+        error = interpolate(d);
         fieldIsSet = fieldChanged = true;
-        currentPoints(full);
+        quality_.currentPoints(full);
         return full;
     };
 
@@ -113,9 +113,9 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
     if (rescue && controlPoints_.blending())
     {
         blend = controlPoints_.finishBlend(d);
-        r.boundaryError = interpolateDisplacement(d);
+        r.boundaryError = interpolate(d);
         fieldChanged = true;
-        current = curPoints();
+        quality_.currentPoints(current);
         worst = window.worst(current);
     }
 
@@ -167,12 +167,12 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
         const pointField& p = meshOfSet(window.points());
         r.boundaryError = error;
         const dcpRBFQualityRegion::rankedCell w(window.worst(p));
-        if (debug)
+        if (dcpRBFMotionSolver::debug)
         {
             // every digit: the trials of trialPoints window and all compare
             OStringStream msg;
             msg.precision(17);
-            msg << typeName << ": trial swap on " << window.size()
+            msg << dcpRBFMotionSolver::typeName << ": trial swap on " << window.size()
                 << " cells: minimum " << w[0] << " against " << worst[0]
                 << ", sum " << window.sum(p)
                 << (w[0] > worst[0] ? ", kept" : ", undone");
@@ -205,7 +205,7 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
         r.boundaryError = error0;
         ++r.nUndone;
         // rescue: the next leaving point instead, a few times
-        if (!rescue || ++skip >= rescueSkips)
+        if (!dcpRBFTrialSchedule::tryNextLeaving(rescue, skip))
         {
             break;
         }
@@ -213,21 +213,21 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
     const label kept = controlPoints_.endTrials(d, !rescue);
     if (windowed)
     {
-        r.trialPoints = nGlobalPoints(window.points());
+        r.trialPoints = pointCount_.count(window.points());
     }
     if (!kept && !blend.from)
     {
         // the mesh without swaps (every trial undone), measured in
-        // lastQuality_ and lastPoints_ (now if not yet)
+        // quality_.last() and quality_.lastPoints() (now if not yet)
         if (fieldChanged)
         {
             pointDisplacement_.primitiveFieldRef() = noSwapField;
         }
-        pointsMeasured_ = noSwapMeasured;
+        quality_.setMeasured(noSwapMeasured);
         if (!measured)
         {
             // (current: no trial kept, the points without swaps)
-            measureWhole(r, &current);
+            quality_.measureTimed(r, &current);
         }
         return 0;
     }
@@ -240,20 +240,20 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
     pointField noSwapPoints;
     if (measured)
     {
-        noSwap = std::move(lastQuality_);
-        noSwapPoints = std::move(lastPoints_);
+        noSwap = std::move(quality_.last());
+        noSwapPoints = std::move(quality_.lastPoints());
     }
     if ((kept && !rescue && settings_.selection().swapBlendSteps > 1) || !fieldIsSet)
     {
-        r.boundaryError = interpolateDisplacement(d);
+        r.boundaryError = interpolate(d);
     }
-    measureWhole(r);
+    quality_.measureTimed(r);
     // better than the window without swaps (and valid) is better than the
     // whole mesh without them; else that mesh is measured to compare
     const bool better =
         measured
-      ? lastQuality_.minQuality > noSwap.minQuality
-      : (lastQuality_.nInverted == 0 && lastQuality_.minQuality > noSwapWindowMin)
+      ? quality_.last().minQuality > noSwap.minQuality
+      : (quality_.last().nInverted == 0 && quality_.last().minQuality > noSwapWindowMin)
      || beatsUnswapped(noSwapField, noSwapRecord, r);
     if (better)
     {
@@ -270,9 +270,9 @@ Foam::label Foam::dcpRBFMotionSolver::trySwaps
     if (measured)
     {
         pointDisplacement_.primitiveFieldRef() = noSwapField;
-        lastQuality_ = std::move(noSwap);
-        lastPoints_.transfer(noSwapPoints);
-        pointsMeasured_ = noSwapMeasured;
+        quality_.last() = std::move(noSwap);
+        quality_.lastPoints().transfer(noSwapPoints);
+        quality_.setMeasured(noSwapMeasured);
         const scalar guardTime = r.guardTime;
         r = noSwapRecord;
         r.guardTime = guardTime;

@@ -1,0 +1,115 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF: radial-basis-function mesh motion with dynamic control points
+-------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
+-------------------------------------------------------------------------------
+Description
+    dcpRBFMotionSolver, continued: the checks at construction (the set's
+    size, the radius's reach) and the threads.
+\*---------------------------------------------------------------------------*/
+
+#include "dcpRBFMotionSolver.H"
+#include "dcpRBFThreads.H"
+#include "OSspecific.H"
+#include "SimdWidth.hpp"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dcpRBFMotionSolver::checkSetSize() const
+{
+    const dcpRBFSelectionSettings& sel = settings_->selection();
+    if (sel.selection == dcpRBFSelectionSettings::mode::all)
+    {
+        return;
+    }
+    const dictionary& dict = coeffDict().subDict("controlPoints");
+    const label fewest = settings_->polynomial() ? projection_->dim() + 1 : 1;
+    if (sel.maxPoints < fewest)
+    {
+        FatalIOErrorInFunction(dict)
+            << "maxPoints " << sel.maxPoints << " is below the "
+            << fewest << " control points the linear polynomial needs in "
+            << projection_->dim() << "D: take maxPoints " << fewest
+            << " or more (or polynomial false)" << exit(FatalIOError);
+    }
+    if (sel.minPoints > boundaryPoints_->size())
+    {
+        FatalIOErrorInFunction(dict)
+            << "minPoints " << sel.minPoints << " is above the "
+            << boundaryPoints_->size() << " boundary points of movingPatches"
+            << " and staticPatches (the candidate control points): take"
+            << " minPoints " << boundaryPoints_->size() << " or fewer"
+            << " (selection all takes every one)" << exit(FatalIOError);
+    }
+}
+
+
+void Foam::dcpRBFMotionSolver::setThreads() const
+{
+    // MPI ranks x OpenMP threads beyond the cores slows everything down
+    // several times: the cores available to the rank, shared among the
+    // node's ranks, unless the user says otherwise (dcpRBFThreads)
+    #ifdef _OPENMP
+    const label nThreads =
+        dcpRBFThreads::set(mesh().nPoints(), settings_->pointsPerThread());
+    // ranks may differ (their point counts): the range over them
+    const label nMin = returnReduce(nThreads, minOp<label>());
+    const label nMax = returnReduce(nThreads, maxOp<label>());
+    const bool fromEnv = !getEnv("OMP_NUM_THREADS").empty();
+    Info<< typeName << ": "
+        << (
+               nMin == nMax ? Foam::name(nMin)
+             : Foam::name(nMin) + "-" + Foam::name(nMax)
+           ).c_str()
+        << " OpenMP thread(s)" << (Pstream::parRun() ? " per processor" : "")
+        << " (" << (
+               fromEnv ? string("OMP_NUM_THREADS")
+             : settings_->pointsPerThread() > 0
+             ? "one per pointsPerThread " + Foam::name(settings_->pointsPerThread())
+               + " mesh points, up to the cores available"
+             : string("the cores available")
+           ).c_str()
+        << (fromEnv ? ")" : "; set OMP_NUM_THREADS to change)") << endl;
+    #endif
+    // the quality kernels' build (the same values on any)
+    const string cap(getEnv("DCPRBF_SIMD_WIDTH"));
+    if (!cap.empty() && cap.find_first_not_of("0123456789") != std::string::npos)
+    {
+        FatalErrorInFunction
+            << "The environment variable DCPRBF_SIMD_WIDTH is " << cap
+            << ": not a width in bits. Allowed: a whole number, e.g. 256"
+            << " (at most AVX2) or 128 (no AVX); unset: the widest the"
+            << " processor has" << exit(FatalError);
+    }
+    const unsigned width = dcprbf::SimdWidth::bits();
+    Info<< typeName << ": quality kernels in "
+        << (width >= 512 ? "AVX-512" : width >= 256 ? "AVX2" : "default")
+        << " vectors"
+        << (
+               getEnv("DCPRBF_SIMD_WIDTH").empty()
+             ? " (DCPRBF_SIMD_WIDTH=256 caps them at AVX2)"
+             : " (DCPRBF_SIMD_WIDTH " + getEnv("DCPRBF_SIMD_WIDTH") + ")"
+           ).c_str()
+        << endl;
+}
+
+
+void Foam::dcpRBFMotionSolver::checkRegion() const
+{
+    if (region_->size() == 0)
+    {
+        FatalIOErrorInFunction(coeffDict())
+            << "supportRadius " << Foam::name(settings_->kernel().radius()).c_str() << " reaches"
+            << " no cell centre from the moving patches' points: the cells"
+            << " touching them would take the whole motion (and fold as"
+            << " soon as it exceeds their size). Take supportRadius several"
+            << " times the largest displacement, and at least a few cells"
+            << " across (e.g. 5 movingExtent)"
+            << exit(FatalIOError);
+    }
+}
+
+
+// ************************************************************************* //

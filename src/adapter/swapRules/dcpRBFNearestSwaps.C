@@ -1,0 +1,58 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF: radial-basis-function mesh motion with dynamic control points
+-------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
+\*---------------------------------------------------------------------------*/
+
+#include "dcpRBFNearestSwaps.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(dcpRBFNearestSwaps, 0);
+    addToRunTimeSelectionTable(dcpRBFSwapRule, dcpRBFNearestSwaps, components);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFNearestSwaps::dcpRBFNearestSwaps
+(
+    const polyMesh& mesh,
+    const dcpRBFSettings& settings,
+    dcpRBFControlPoints& controlPoints,
+    const dcpRBFQualityRegion& region,
+    dcpRBFQualityMeasurement& quality,
+    dcpRBFInterpolation& interpolation,
+    pointVectorField& pointDisplacement,
+    const pointField& points0
+)
+:
+    dcpRBFSwapRule
+    (
+        mesh, settings, controlPoints, region, quality, interpolation,
+        pointDisplacement, points0
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dcpRBFNearestSwaps::beforeSolve(dcpRBFStepLog::record& r)
+{
+    if (controlPoints_.ready() && controlPoints_.swapsBeforeSolve())
+    {
+        const dcpRBFQualityRegion::summary& q = quality_.current();
+        if (q.minQuality < 1 - 1e-12)
+        {
+            controlPoints_.swap(q, r.nAdded, r.nRemoved);
+        }
+    }
+}
+
+
+// ************************************************************************* //
