@@ -263,13 +263,9 @@ const std::vector<K>& table()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-const Foam::UList<Foam::dcpRBFKeyword>& Foam::dcpRBFKeywords::all()
+const std::vector<Foam::dcpRBFKeyword>& Foam::dcpRBFKeywords::all()
 {
-    static const UList<dcpRBFKeyword> list
-    (
-        const_cast<dcpRBFKeyword*>(table().data()), label(table().size())
-    );
-    return list;
+    return table();
 }
 
 
