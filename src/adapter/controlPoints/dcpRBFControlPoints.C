@@ -319,11 +319,10 @@ Foam::label Foam::dcpRBFControlPoints::reselect
 
 bool Foam::dcpRBFControlPoints::addNear
 (
-    const dcpRBFQualityRegion::rankedCell& cell
+    const dcpRBFRankedCell& cell
 )
 {
-    const Eigen::RowVector3d x(cell[1], cell[2], cell[3]);
-    if (set_.addNearest(x) < 0)
+    if (set_.addNearest(cell.centre()) < 0)
     {
         return false;
     }

@@ -89,7 +89,7 @@ void Foam::dcpRBFOuterCells::accumulate
     const pointField& p,
     label& nInverted,
     scalar& sum,
-    FixedList<scalar, 4>& lowest
+    dcpRBFRankedCell& lowest
 ) const
 {
     const scalarField q(quality_->compute(p));
@@ -98,10 +98,7 @@ void Foam::dcpRBFOuterCells::accumulate
         const label weight = (nAffine_ > 0 && i == q.size() - 1) ? nAffine_ : 1;
         nInverted += weight*(q[i] <= 0);
         sum += weight*q[i];
-        const FixedList<scalar, 4> c
-        ({
-            q[i], centres_[i][0], centres_[i][1], centres_[i][2]
-        });
+        const dcpRBFRankedCell c(q[i], centres_[i]);
         if (c < lowest) lowest = c;
     }
 }

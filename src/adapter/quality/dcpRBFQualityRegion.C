@@ -72,9 +72,9 @@ dcprbf::Points Foam::dcpRBFQualityRegion::checkSources
 }
 
 
-Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFQualityRegion::globalLowest
+Foam::dcpRBFRankedCell Foam::dcpRBFQualityRegion::globalLowest
 (
-    const rankedCell& local
+    const dcpRBFRankedCell& local
 )
 {
     // Gathered as lists of scalars: newer versions gather a list of
@@ -83,10 +83,10 @@ Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFQualityRegion::globalLowest
     List<scalarList> all(Pstream::nProcs());
     all[Pstream::myProcNo()] = dcpRBFCompat::makeList<scalar>(local);
     dcpRBFCompat::allGatherList(all);
-    rankedCell lowest(local);
+    dcpRBFRankedCell lowest(local);
     for (const scalarList& c : all)
     {
-        lowest = std::min(lowest, rankedCell({c[0], c[1], c[2], c[3]}));
+        lowest = std::min(lowest, dcpRBFRankedCell(c));
     }
     return lowest;
 }
@@ -212,7 +212,7 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     // sorted, in one pass over the block); then the blocks in order
     const auto ranked = [&](const label i)
     {
-        return rankedCell({q[i], centres_[i][0], centres_[i][1], centres_[i][2]});
+        return dcpRBFRankedCell(q[i], centres_[i]);
     };
     const auto lower = [&](const label a, const label b)
     {
@@ -311,30 +311,30 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     s.meanQuality = s.nCells ? returnReduce(sum, sumOp<scalar>())/s.nCells : 1;
 
     // The global n worst and n best
-    std::vector<rankedCell> lowest, highest;
+    std::vector<dcpRBFRankedCell> lowest, highest;
     for (const label i : lowestAt) lowest.push_back(ranked(i));
     for (const label i : highestAt) highest.push_back(ranked(i));
 
-    List<List<rankedCell>> worstAll(Pstream::nProcs()), bestAll(Pstream::nProcs());
-    worstAll[Pstream::myProcNo()] = dcpRBFCompat::makeList<rankedCell>(lowest);
-    bestAll[Pstream::myProcNo()] = dcpRBFCompat::makeList<rankedCell>(highest);
+    List<List<dcpRBFRankedCell>> worstAll(Pstream::nProcs()), bestAll(Pstream::nProcs());
+    worstAll[Pstream::myProcNo()] = dcpRBFCompat::makeList<dcpRBFRankedCell>(lowest);
+    bestAll[Pstream::myProcNo()] = dcpRBFCompat::makeList<dcpRBFRankedCell>(highest);
     dcpRBFCompat::allGatherList(worstAll);
     dcpRBFCompat::allGatherList(bestAll);
 
-    std::vector<rankedCell> worst, best;
+    std::vector<dcpRBFRankedCell> worst, best;
     for (const auto& l : worstAll) worst.insert(worst.end(), l.begin(), l.end());
     for (const auto& l : bestAll) best.insert(best.end(), l.begin(), l.end());
     std::sort(worst.begin(), worst.end());
-    std::sort(best.begin(), best.end(), [](const rankedCell& a, const rankedCell& b) { return b < a; });
+    std::sort(best.begin(), best.end(), [](const dcpRBFRankedCell& a, const dcpRBFRankedCell& b) { return b < a; });
 
-    s.worst = dcpRBFCompat::makeList<rankedCell>(worst.begin(), worst.begin() + min(n, label(worst.size())));
-    s.best = dcpRBFCompat::makeList<rankedCell>(best.begin(), best.begin() + min(n, label(best.size())));
+    s.worst = dcpRBFCompat::makeList<dcpRBFRankedCell>(worst.begin(), worst.begin() + min(n, label(worst.size())));
+    s.best = dcpRBFCompat::makeList<dcpRBFRankedCell>(best.begin(), best.begin() + min(n, label(best.size())));
 
     // The check: the region and the other cells whose points can move
     // (the last of them standing for nAffine_ if any moved affinely)
     label outerInverted = 0;
     scalar outerSum = 0;
-    rankedCell lowestHere({GREAT, 0, 0, 0});
+    dcpRBFRankedCell lowestHere(GREAT);
     if (leastAt >= 0) lowestHere = ranked(leastAt);
     outer_->accumulate(p, outerInverted, outerSum, lowestHere);
     s.nChecked = nChecked_;
@@ -343,8 +343,8 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
         s.nChecked
       ? returnReduce(sum + outerSum, sumOp<scalar>())/s.nChecked : 1;
     s.lowest = globalLowest(lowestHere);
-    s.hasLowest = s.lowest[0] < GREAT;
-    s.checkedMin = s.hasLowest ? s.lowest[0] : 1;
+    s.hasLowest = s.lowest.quality() < GREAT;
+    s.checkedMin = s.hasLowest ? s.lowest.quality() : 1;
     s.quality.transfer(q);
     return s;
 }

@@ -38,10 +38,9 @@ void Foam::dcpRBFControlPoints::swap
     {
         return;
     }
-    const auto leaveNear = [&](const dcpRBFQualityRegion::rankedCell& c)
+    const auto leaveNear = [&](const dcpRBFRankedCell& c)
     {
-        const Eigen::RowVector3d x(c[1], c[2], c[3]);
-        if (set_.removeNearest(x) < 0) return false;
+        if (set_.removeNearest(c.centre()) < 0) return false;
         updated_ = true;
         return true;
     };
@@ -58,8 +57,7 @@ void Foam::dcpRBFControlPoints::swap
             // at maxPoints: both in one update, at constant size
             set_.swapNearest
             (
-                Eigen::RowVector3d(q.worst[k][1], q.worst[k][2], q.worst[k][3]),
-                Eigen::RowVector3d(q.best[k][1], q.best[k][2], q.best[k][3])
+                q.worst[k].centre(), q.best[k].centre()
             )
         )
         {
@@ -83,7 +81,7 @@ bool Foam::dcpRBFControlPoints::canTrial(const bool rescue) const
 
 bool Foam::dcpRBFControlPoints::proposeSwap
 (
-    const dcpRBFQualityRegion::rankedCell& worst,
+    const dcpRBFRankedCell& worst,
     const dcprbf::Values& d,
     const label skip
 )
@@ -92,8 +90,7 @@ bool Foam::dcpRBFControlPoints::proposeSwap
     // candidates, the one of largest error / distance
     static const int joinNeighbours = 8;
     const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
-    const Eigen::RowVector3d x(worst[1], worst[2], worst[3]);
-    const Eigen::Index in = set_.mostInaccurateNear(x, d, joinNeighbours, 1e-9*dMax);
+    const Eigen::Index in = set_.mostInaccurateNear(worst.centre(), d, joinNeighbours, 1e-9*dMax);
     if (in < 0)
     {
         return false;

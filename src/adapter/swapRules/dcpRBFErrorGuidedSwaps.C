@@ -14,7 +14,10 @@ License
 namespace Foam
 {
     defineTypeNameAndDebug(dcpRBFErrorGuidedSwaps, 0);
-    addToRunTimeSelectionTable(dcpRBFSwapRule, dcpRBFErrorGuidedSwaps, components);
+    addNamedToRunTimeSelectionTable
+    (
+        dcpRBFSwapRule, dcpRBFErrorGuidedSwaps, components, errorGuided
+    );
 }
 
 

@@ -65,14 +65,14 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     {
         quality_.currentPoints(current);
     }
-    dcpRBFQualityRegion::rankedCell worst
+    dcpRBFRankedCell worst
     (
         measured ? quality_.last().worst[0] : window.worst(current)
     );
     // unmeasured: the window's minimum without swaps, at least the mesh's;
     // an inverted cell there: the mesh is measured and rescued instead
     // (afterInterpolate())
-    const scalar noSwapWindowMin = worst[0];
+    const scalar noSwapWindowMin = worst.quality();
     if (!measured && noSwapWindowMin <= 0)
     {
         quality_.measureTimed(r, &current);
@@ -125,7 +125,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     {
         if
         (
-            worst[0] >= 1 - 1e-12
+            worst.quality() >= 1 - 1e-12
          || !controlPoints_.proposeSwap(worst, d, skip)
         )
         {
@@ -166,19 +166,19 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
         const scalar error0 = r.boundaryError;
         const pointField& p = meshOfSet(window.points());
         r.boundaryError = error;
-        const dcpRBFQualityRegion::rankedCell w(window.worst(p));
+        const dcpRBFRankedCell w(window.worst(p));
         if (dcpRBFMotionSolver::debug)
         {
             // every digit: the trials of trialPoints window and all compare
             OStringStream msg;
             msg.precision(17);
             msg << dcpRBFMotionSolver::typeName << ": trial swap on " << window.size()
-                << " cells: minimum " << w[0] << " against " << worst[0]
+                << " cells: minimum " << w.quality() << " against " << worst.quality()
                 << ", sum " << window.sum(p)
-                << (w[0] > worst[0] ? ", kept" : ", undone");
+                << (w.quality() > worst.quality() ? ", kept" : ", undone");
             Info<< msg.str().c_str() << endl;
         }
-        if (w[0] > worst[0])
+        if (w.quality() > worst.quality())
         {
             controlPoints_.keepSwap();
             worst = w;

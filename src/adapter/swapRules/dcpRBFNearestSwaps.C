@@ -14,7 +14,10 @@ License
 namespace Foam
 {
     defineTypeNameAndDebug(dcpRBFNearestSwaps, 0);
-    addToRunTimeSelectionTable(dcpRBFSwapRule, dcpRBFNearestSwaps, components);
+    addNamedToRunTimeSelectionTable
+    (
+        dcpRBFSwapRule, dcpRBFNearestSwaps, components, nearest
+    );
 }
 
 

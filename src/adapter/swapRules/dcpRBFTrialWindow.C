@@ -106,7 +106,7 @@ void Foam::dcpRBFTrialWindow::append(labelList&& positions)
 }
 
 
-Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::localWorst
+Foam::dcpRBFRankedCell Foam::dcpRBFTrialWindow::localWorst
 (
     const dcpRBFCellQuality& quality,
     const labelUList& positions,
@@ -116,25 +116,24 @@ Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::localWorst
     // none here: above every quality
     const scalarField q(quality.compute(p));
     const List<FixedList<scalar, 3>>& centres = region_.centres();
-    dcpRBFQualityRegion::rankedCell w({VGREAT, 0, 0, 0});
+    dcpRBFRankedCell w(VGREAT);
     forAll(q, i)
     {
-        const FixedList<scalar, 3>& c = centres[positions[i]];
-        w = std::min(w, dcpRBFQualityRegion::rankedCell({q[i], c[0], c[1], c[2]}));
+        w = std::min(w, dcpRBFRankedCell(q[i], centres[positions[i]]));
     }
     return w;
 }
 
 
-Foam::dcpRBFQualityRegion::rankedCell Foam::dcpRBFTrialWindow::globalWorst
+Foam::dcpRBFRankedCell Foam::dcpRBFTrialWindow::globalWorst
 (
-    const dcpRBFQualityRegion::rankedCell& local
+    const dcpRBFRankedCell& local
 )
 {
-    dcpRBFQualityRegion::rankedCell w(dcpRBFQualityRegion::globalLowest(local));
-    if (w[0] == VGREAT)
+    dcpRBFRankedCell w(dcpRBFQualityRegion::globalLowest(local));
+    if (w.quality() == VGREAT)
     {
-        w[0] = 1;
+        w.quality() = 1;
     }
     return w;
 }
@@ -185,18 +184,18 @@ void Foam::dcpRBFTrialWindow::add
 }
 
 
-Foam::dcpRBFQualityRegion::rankedCell
+Foam::dcpRBFRankedCell
 Foam::dcpRBFTrialWindow::worstAdded(const pointField& p) const
 {
     return globalWorst(localWorst(scans_.last(), chunks_.last(), p));
 }
 
 
-Foam::dcpRBFQualityRegion::rankedCell
+Foam::dcpRBFRankedCell
 Foam::dcpRBFTrialWindow::worst(const pointField& p) const
 {
     // every chunk here, then one exchange
-    dcpRBFQualityRegion::rankedCell w({VGREAT, 0, 0, 0});
+    dcpRBFRankedCell w(VGREAT);
     forAll(scans_, i)
     {
         w = std::min(w, localWorst(scans_[i], chunks_[i], p));
