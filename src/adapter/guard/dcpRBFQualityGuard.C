@@ -35,7 +35,7 @@ Foam::dcpRBFQualityGuard::dcpRBFQualityGuard
 void Foam::dcpRBFQualityGuard::apply
 (
     const dcprbf::Values& d,
-    dcpRBFStepLog::record& r
+    dcpRBFStepState& step
 )
 {
     const scalar floor = settings_.qualityFloor();
@@ -88,14 +88,14 @@ void Foam::dcpRBFQualityGuard::apply
             }
             break;
         }
-        ++r.nGuard;
+        ++step.nGuard;
         controlPoints_.solve(d);
-        r.boundaryError = interpolation_.interpolate(d);
-        quality_.measure(r);
+        step.boundaryError = interpolation_.interpolate(d);
+        quality_.measure();
     }
 
-    warnings_.warnInverted(r);
-    warnings_.warnLowQuality(r);
+    warnings_.warnInverted(quality_.last());
+    warnings_.warnLowQuality(quality_.last());
 }
 
 

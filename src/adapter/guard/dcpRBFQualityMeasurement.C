@@ -28,6 +28,8 @@ Foam::dcpRBFQualityMeasurement::dcpRBFQualityMeasurement
     points0_(points0),
     nRanked_(max(label(1), nSwap)),
     measured_(false),
+    measuredInStep_(false),
+    checkTime_(0),
     nMeasurements_(0)
 {}
 
@@ -48,53 +50,37 @@ void Foam::dcpRBFQualityMeasurement::currentPoints(pointField& p) const
 }
 
 
-void Foam::dcpRBFQualityMeasurement::measureLast(dcpRBFStepLog::record& r)
-{
-    measured_ = true;
-    measureRegion(lastPoints_);
-    ++nMeasurements_;
-    r.nCells = last_.nChecked;
-    r.nInverted = last_.checkedInverted;
-    r.minQuality = last_.checkedMin;
-    r.meanQuality = last_.checkedMean;
-    r.regionMin = last_.minQuality;
-}
-
-
-void Foam::dcpRBFQualityMeasurement::measure(dcpRBFStepLog::record& r)
-{
-    currentPoints(lastPoints_);
-    measureLast(r);
-}
-
-
-void Foam::dcpRBFQualityMeasurement::measure
-(
-    dcpRBFStepLog::record& r,
-    pointField& points
-)
-{
-    lastPoints_.transfer(points);
-    measureLast(r);
-}
-
-
-void Foam::dcpRBFQualityMeasurement::measureTimed
-(
-    dcpRBFStepLog::record& r,
-    pointField* points
-)
+void Foam::dcpRBFQualityMeasurement::measureLast()
 {
     clockTime timer;
-    if (points)
-    {
-        measure(r, *points);
-    }
-    else
-    {
-        measure(r);
-    }
-    r.guardTime += timer.elapsedTime();
+    measured_ = true;
+    measuredInStep_ = true;
+    measureRegion(lastPoints_);
+    ++nMeasurements_;
+    checkTime_ += timer.elapsedTime();
+}
+
+
+void Foam::dcpRBFQualityMeasurement::startStep()
+{
+    measured_ = false;
+    measuredInStep_ = false;
+}
+
+
+void Foam::dcpRBFQualityMeasurement::measure()
+{
+    clockTime timer;
+    currentPoints(lastPoints_);
+    checkTime_ += timer.elapsedTime();
+    measureLast();
+}
+
+
+void Foam::dcpRBFQualityMeasurement::measure(pointField& points)
+{
+    lastPoints_.transfer(points);
+    measureLast();
 }
 
 

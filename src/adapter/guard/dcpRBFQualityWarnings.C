@@ -105,9 +105,12 @@ bool Foam::dcpRBFQualityWarnings::dynamicCouldHelp() const
 }
 
 
-void Foam::dcpRBFQualityWarnings::warnInverted(const dcpRBFStepLog::record& r)
+void Foam::dcpRBFQualityWarnings::warnInverted
+(
+    const dcpRBFQualityRegion::summary& q
+)
 {
-    if (!r.nInverted)
+    if (!q.checkedInverted)
     {
         invertedSteps_ = 0;
         return;
@@ -134,8 +137,8 @@ void Foam::dcpRBFQualityWarnings::warnInverted(const dcpRBFStepLog::record& r)
         }
         WarningInFunction
             << "Time " << mesh_.time().timeName() << ": "
-            << r.nInverted << " inverted or degenerate cells"
-            << " (quality <= 0, minimum " << r.minQuality << "). The mesh is"
+            << q.checkedInverted << " inverted or degenerate cells"
+            << " (quality <= 0, minimum " << q.checkedMin << "). The mesh is"
             << " invalid: "
             << (
                    rotation_
@@ -173,12 +176,15 @@ void Foam::dcpRBFQualityWarnings::warnInverted(const dcpRBFStepLog::record& r)
 }
 
 
-void Foam::dcpRBFQualityWarnings::warnLowQuality(const dcpRBFStepLog::record& r)
+void Foam::dcpRBFQualityWarnings::warnLowQuality
+(
+    const dcpRBFQualityRegion::summary& q
+)
 {
     if
     (
         lowQualityWarned_ || settings_.qualityFloor() > 0
-     || !(r.minQuality < lowQuality && r.minQuality > 0)
+     || !(q.checkedMin < lowQuality && q.checkedMin > 0)
     )
     {
         return;
@@ -186,7 +192,7 @@ void Foam::dcpRBFQualityWarnings::warnLowQuality(const dcpRBFStepLog::record& r)
     lowQualityWarned_ = true;
     WarningInFunction
         << "Time " << mesh_.time().timeName() << ": the minimum cell quality"
-        << " fell to " << r.minQuality << " (1: as the reference mesh's"
+        << " fell to " << q.checkedMin << " (1: as the reference mesh's"
         << " cells; said once). The motion is squeezing cells: enlarge"
         << " supportRadius (several times the largest displacement), set a"
         << " qualityFloor (e.g. " << lowQuality << ": control points are"

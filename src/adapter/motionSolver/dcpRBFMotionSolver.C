@@ -8,7 +8,6 @@ License
 
 #include "dcpRBFMotionSolver.H"
 #include "addToRunTimeSelectionTable.H"
-#include "clockTime.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -172,44 +171,45 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 
 void Foam::dcpRBFMotionSolver::moveWithControlPoints
 (
-    const dcprbf::Values& d,
-    dcpRBFStepLog::record& r,
-    clockTime& timer
+    const dcprbf::Values& d
 )
 {
+    typedef dcpRBFStepTimer::times part;
+    dcpRBFStepState& step = step_;
+
     // Select: the set solved for d, re-selected while the boundary error
     // is too large
     controlPoints_->solve(d);
-    r.nAdded += controlPoints_->reselect(d, r.atMaxPoints);
-    r.selectTime = timer.timeIncrement();
+    step.nAdded += controlPoints_->reselect(d, step.atMaxPoints);
+    timer_->split(&part::select);
 
     // Interpolate and correct (the boundary snapped, the constraints)
     quality_->changed();
-    r.boundaryError = interpolation_->interpolate(d);
-    r.interpolateTime = timer.timeIncrement();
+    step.boundaryError = interpolation_->interpolate(d);
+    timer_->split(&part::interpolate);
 
     // Check: the new mesh's quality, unless the swap rule measures the
     // mesh it keeps itself (one measurement)
     const bool measured = swapRule_->measuresFirst();
     if (measured)
     {
-        quality_->measure(r);
+        quality_->measure();
     }
-    r.guardTime = timer.timeIncrement();
+    timer_->split(&part::guard);
 
     // Swap (swapRule errorGuided: trial swaps kept where they help)
-    const scalar guardBefore = r.guardTime;
-    swapRule_->afterInterpolate(d, r, measured);
-    r.swapTime += timer.timeIncrement() - (r.guardTime - guardBefore);
+    swapRule_->afterInterpolate(d, step, measured);
+    timer_->split(&part::swap);
     // (before the guard: what a later step's mesh without swaps is
     // compared with, dcpRBFTrialSchedule::endWaitIfWorse)
-    const scalar unguardedMin = r.regionMin;
+    const dcpRBFQualityRegion::summary* unguarded = quality_->inStep();
+    const scalar unguardedMin = unguarded ? unguarded->minQuality : 1;
 
     // Guard
-    guard_->apply(d, r);
-    r.guardTime += timer.timeIncrement();
+    guard_->apply(d, step);
+    timer_->split(&part::guard);
 
-    r.nControl = controlPoints_->size();
+    step.nControl = controlPoints_->size();
     controlPoints_->endStep(unguardedMin);
     if (mesh().time().writeTime())
     {
@@ -218,18 +218,24 @@ void Foam::dcpRBFMotionSolver::moveWithControlPoints
 }
 
 
+void Foam::dcpRBFMotionSolver::writeLog()
+{
+    log_->write(step_, quality_->inStep(), timer_->elapsed());
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::dcpRBFMotionSolver::solve()
 {
-    clockTime timer;
-    step_ = dcpRBFStepLog::record();
-    quality_->changed();
-    dcpRBFStepLog::record& r = step_;
+    typedef dcpRBFStepTimer::times part;
+    step_ = dcpRBFStepState();
+    quality_->startStep();
+    timer_.reset(new dcpRBFStepTimer(*quality_));
 
     // Swap before the solve (swapRule nearest: from the mesh as it is)
-    swapRule_->beforeSolve(r);
-    r.swapTime = timer.timeIncrement();
+    swapRule_->beforeSolve(step_);
+    timer_->split(&part::swap);
 
     // Prescribe: the step's boundary displacement (one evaluation of the
     // conditions)
@@ -244,16 +250,16 @@ void Foam::dcpRBFMotionSolver::solve()
 
     if (controlPoints_->select(d))
     {
-        moveWithControlPoints(d, r, timer);
+        moveWithControlPoints(d);
     }
     else if (rotation_->active())
     {
         // Rigid bodies: the blended rigid motions alone
         interpolation_->rigid();
-        r.interpolateTime = timer.timeIncrement();
-        quality_->measure(r);
-        guard_->apply(d, r);
-        r.guardTime = timer.timeIncrement();
+        timer_->split(&part::interpolate);
+        quality_->measure();
+        guard_->apply(d, step_);
+        timer_->split(&part::guard);
     }
     else
     {
@@ -263,19 +269,19 @@ void Foam::dcpRBFMotionSolver::solve()
         if (prescribed_->selfMoved().size())
         {
             prescribed_->constrain();
-            quality_->measure(r);
-            guard_->apply(d, r);
-            r.guardTime = timer.timeIncrement();
+            quality_->measure();
+            guard_->apply(d, step_);
+            timer_->split(&part::guard);
         }
     }
 
     // The conditions' last word; the measured points stay the new points
     // if it changed nothing
     quality_->setMeasured(prescribed_->finish(quality_->measured()));
-    r.pointsTime = timer.timeIncrement();
+    timer_->split(&part::points);
     if (!inNewPoints_)
     {
-        log_->write(r);
+        writeLog();
     }
 }
 
@@ -300,7 +306,6 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
         } inNewPoints(inNewPoints_);
         solve();
     }
-    clockTime timer;
     // the points the quality was measured on, if the displacement is the
     // one they were made from, else made anew. The measured ones by
     // reference (OpenFOAM's callers copy them or read them at once)
@@ -312,8 +317,8 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
         measured ? tmp<pointField>(measuredPoints) : curPoints()
     );
     nReusedPoints_ += measured;
-    step_.pointsTime += timer.elapsedTime();
-    log_->write(step_);
+    timer_->split(&dcpRBFStepTimer::times::points);
+    writeLog();
     return tpoints;
 }
 

@@ -54,8 +54,17 @@ std::string ms(const double seconds)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dcpRBFStepLog::write(const record& r)
+void Foam::dcpRBFStepLog::write
+(
+    const dcpRBFStepState& r,
+    const dcpRBFQualityRegion::summary* quality,
+    const dcpRBFStepTimer::times& t
+)
 {
+    // the figures of no cell checked if the step measured none
+    const dcpRBFQualityRegion::summary none;
+    const dcpRBFQualityRegion::summary& q = quality ? *quality : none;
+
     // 4 significant digits for the qualities and the error, 3 for the
     // times in ms, whatever the case's writePrecision
     OStringStream line;
@@ -75,19 +84,19 @@ void Foam::dcpRBFStepLog::write(const record& r)
         line<< ", trials at " << r.trialPoints << " points";
     }
     line<< (r.rescue ? ", rescue" : "") << "), quality min "
-        << r.minQuality << " mean " << r.meanQuality << " (" << r.nCells
+        << q.checkedMin << " mean " << q.checkedMean << " (" << q.nChecked
         << " cells checked";
-    if (r.nInverted)
+    if (q.checkedInverted)
     {
-        line<< ", " << r.nInverted << " inverted";
+        line<< ", " << q.checkedInverted << " inverted";
     }
     line<< "), relative boundary error " << r.boundaryError
         << (r.atMaxPoints ? " (at maxPoints)" : "");
-    line<< ", time [ms] swap " << ms(r.swapTime).c_str()
-        << " select " << ms(r.selectTime).c_str()
-        << " interpolate " << ms(r.interpolateTime).c_str()
-        << " guard " << ms(r.guardTime).c_str()
-        << " points " << ms(r.pointsTime).c_str();
+    line<< ", time [ms] swap " << ms(t.swap).c_str()
+        << " select " << ms(t.select).c_str()
+        << " interpolate " << ms(t.interpolate).c_str()
+        << " guard " << ms(t.guard).c_str()
+        << " points " << ms(t.points).c_str();
     Info<< line.str().c_str() << endl;
 
     if (!Pstream::master())
@@ -112,11 +121,11 @@ void Foam::dcpRBFStepLog::write(const record& r)
     }
     file_()
         << time_.timeName() << ' ' << r.nControl << ' ' << r.nAdded << ' '
-        << r.nRemoved << ' ' << r.nGuard << ' ' << r.nCells << ' '
-        << r.minQuality << ' ' << r.meanQuality << ' ' << r.boundaryError
-        << ' ' << label(r.atMaxPoints) << ' ' << r.swapTime << ' '
-        << r.selectTime << ' ' << r.interpolateTime << ' ' << r.guardTime
-        << ' ' << r.nUndone << ' ' << r.pointsTime << ' ' << r.nInverted << endl;
+        << r.nRemoved << ' ' << r.nGuard << ' ' << q.nChecked << ' '
+        << q.checkedMin << ' ' << q.checkedMean << ' ' << r.boundaryError
+        << ' ' << label(r.atMaxPoints) << ' ' << t.swap << ' '
+        << t.select << ' ' << t.interpolate << ' ' << t.guard
+        << ' ' << r.nUndone << ' ' << t.points << ' ' << q.checkedInverted << endl;
 }
 
 

@@ -64,7 +64,7 @@ bool Foam::dcpRBFErrorGuidedSwaps::measuresFirst() const
 void Foam::dcpRBFErrorGuidedSwaps::afterInterpolate
 (
     const dcprbf::Values& d,
-    dcpRBFStepLog::record& r,
+    dcpRBFStepState& step,
     const bool measured
 )
 {
@@ -75,7 +75,7 @@ void Foam::dcpRBFErrorGuidedSwaps::afterInterpolate
     const FixedList<label, 2> before(schedule.save());
     if
     (
-        trySwaps(d, r, measured) == 0
+        trySwaps(d, step, measured) == 0
      && !measured
      && quality_.last().nInverted > 0
     )
@@ -83,11 +83,9 @@ void Foam::dcpRBFErrorGuidedSwaps::afterInterpolate
         // the mesh without swaps (measured) has inverted cells: the
         // rescue, backing off as if the trials had not been made
         schedule.restore(before);
-        trySwaps(d, r, true);
+        trySwaps(d, step, true);
     }
-    // (after the trials: a record put back by them is the one without
-    // swaps)
-    r.waitEnded = waitEnded;
+    step.waitEnded = waitEnded;
 }
 
 
@@ -101,8 +99,8 @@ Foam::scalar Foam::dcpRBFErrorGuidedSwaps::interpolate(const dcprbf::Values& d)
 bool Foam::dcpRBFErrorGuidedSwaps::beatsUnswapped
 (
     const vectorField& noSwapField,
-    const dcpRBFStepLog::record& noSwapRecord,
-    dcpRBFStepLog::record& r
+    const scalar noSwapError,
+    dcpRBFStepState& step
 )
 {
     // the swapped mesh aside, the mesh without swaps measured in its place
@@ -110,24 +108,19 @@ bool Foam::dcpRBFErrorGuidedSwaps::beatsUnswapped
     vectorField swappedField(disp);
     dcpRBFQualityRegion::summary swapped(std::move(quality_.last()));
     pointField swappedPoints(std::move(quality_.lastPoints()));
-    const dcpRBFStepLog::record swappedRecord(r);
+    const scalar swappedError = step.boundaryError;
     disp = noSwapField;
-    r = noSwapRecord;
-    r.nUndone = swappedRecord.nUndone;
-    r.trialPoints = swappedRecord.trialPoints;
-    r.guardTime = swappedRecord.guardTime;
-    quality_.measureTimed(r);
+    step.boundaryError = noSwapError;
+    quality_.measure();
     // (without swaps inverted: abandoned, the rescue follows, as it would
     // have had that mesh been measured first)
     if (quality_.last().nInverted == 0 && swapped.minQuality > quality_.last().minQuality)
     {
-        const scalar guardTime = r.guardTime;
         disp.transfer(swappedField);
         quality_.last() = std::move(swapped);
         quality_.lastPoints().transfer(swappedPoints);
         quality_.setMeasured(true);
-        r = swappedRecord;
-        r.guardTime = guardTime;
+        step.boundaryError = swappedError;
         return true;
     }
     return false;

@@ -21,7 +21,7 @@ Description
 Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
 (
     const dcprbf::Values& d,
-    dcpRBFStepLog::record& r,
+    dcpRBFStepState& step,
     const bool measured
 )
 {
@@ -43,7 +43,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
         dcpRBFTrialSchedule::nTrials(rescue, settings_.selection().nSwap);
     const bool atWindow =
         settings_.selection().trialAt == dcpRBFSelectionSettings::trialPoints::window;
-    r.rescue = rescue;
+    step.rescue = rescue;
 
     // Trials judged on the worst cells (of this step's mesh without swaps
     // if measured, else of the last step's mesh) and those around the
@@ -75,7 +75,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     const scalar noSwapWindowMin = worst.quality();
     if (!measured && noSwapWindowMin <= 0)
     {
-        quality_.measureTimed(r, &current);
+        quality_.measure(current);
         return 0;
     }
     bool complete = true;
@@ -87,7 +87,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     bool windowed = false;
     const vectorField noSwapField(pointDisplacement_.primitiveField());
     const bool noSwapMeasured = quality_.measured();
-    const dcpRBFStepLog::record noSwapRecord(r);
+    const scalar noSwapError = step.boundaryError;
 
     // The mesh of the current evaluator at these of the window's points
     // (at every point if it cannot be restricted: in the displacement)
@@ -113,7 +113,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     if (rescue && controlPoints_.blending())
     {
         blend = controlPoints_.finishBlend(d);
-        r.boundaryError = interpolate(d);
+        step.boundaryError = interpolate(d);
         fieldChanged = true;
         quality_.currentPoints(current);
         worst = window.worst(current);
@@ -163,9 +163,9 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
         const bool setBefore = fieldIsSet;
         controlPoints_.solve(d);
         fieldIsSet = false;
-        const scalar error0 = r.boundaryError;
+        const scalar error0 = step.boundaryError;
         const pointField& p = meshOfSet(window.points());
-        r.boundaryError = error;
+        step.boundaryError = error;
         const dcpRBFRankedCell w(window.worst(p));
         if (dcpRBFMotionSolver::debug)
         {
@@ -202,8 +202,8 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
         // did not change it
         controlPoints_.undoSwap(d);
         fieldIsSet = !fieldIsSet && setBefore;
-        r.boundaryError = error0;
-        ++r.nUndone;
+        step.boundaryError = error0;
+        ++step.nUndone;
         // rescue: the next leaving point instead, a few times
         if (!dcpRBFTrialSchedule::tryNextLeaving(rescue, skip))
         {
@@ -213,7 +213,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     const label kept = controlPoints_.endTrials(d, !rescue);
     if (windowed)
     {
-        r.trialPoints = pointCount_.count(window.points());
+        step.trialPoints = pointCount_.count(window.points());
     }
     if (!kept && !blend.from)
     {
@@ -227,7 +227,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
         if (!measured)
         {
             // (current: no trial kept, the points without swaps)
-            quality_.measureTimed(r, &current);
+            quality_.measure(current);
         }
         return 0;
     }
@@ -245,20 +245,20 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     }
     if ((kept && !rescue && settings_.selection().swapBlendSteps > 1) || !fieldIsSet)
     {
-        r.boundaryError = interpolate(d);
+        step.boundaryError = interpolate(d);
     }
-    quality_.measureTimed(r);
+    quality_.measure();
     // better than the window without swaps (and valid) is better than the
     // whole mesh without them; else that mesh is measured to compare
     const bool better =
         measured
       ? quality_.last().minQuality > noSwap.minQuality
       : (quality_.last().nInverted == 0 && quality_.last().minQuality > noSwapWindowMin)
-     || beatsUnswapped(noSwapField, noSwapRecord, r);
+     || beatsUnswapped(noSwapField, noSwapError, step);
     if (better)
     {
-        r.nAdded += kept;
-        r.nRemoved += kept;
+        step.nAdded += kept;
+        step.nRemoved += kept;
         return kept;
     }
     controlPoints_.abandonSwaps(d);
@@ -266,21 +266,16 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     {
         controlPoints_.resumeBlend(std::move(blend), d);
     }
-    const label nUndone = r.nUndone, trialPoints = r.trialPoints;
     if (measured)
     {
         pointDisplacement_.primitiveFieldRef() = noSwapField;
         quality_.last() = std::move(noSwap);
         quality_.lastPoints().transfer(noSwapPoints);
         quality_.setMeasured(noSwapMeasured);
-        const scalar guardTime = r.guardTime;
-        r = noSwapRecord;
-        r.guardTime = guardTime;
+        step.boundaryError = noSwapError;
     }
     // (else the mesh without swaps is in place, measured: see beatsUnswapped)
-    r.nUndone = nUndone + kept;
-    r.trialPoints = trialPoints;
-    r.rescue = rescue;
+    step.nUndone += kept;
     return 0;
 }
 

@@ -45,14 +45,14 @@ Foam::dcpRBFNearestSwaps::dcpRBFNearestSwaps
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dcpRBFNearestSwaps::beforeSolve(dcpRBFStepLog::record& r)
+void Foam::dcpRBFNearestSwaps::beforeSolve(dcpRBFStepState& step)
 {
     if (controlPoints_.ready() && controlPoints_.swapsBeforeSolve())
     {
         const dcpRBFQualityRegion::summary& q = quality_.current();
         if (q.minQuality < 1 - 1e-12)
         {
-            controlPoints_.swap(q, r.nAdded, r.nRemoved);
+            controlPoints_.swap(q, step.nAdded, step.nRemoved);
         }
     }
 }
