@@ -10,24 +10,26 @@ PYTHON = "/usr/bin/python3"
 TOP = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
 
-def foam_env(script):
+def foam_env(script, flag="DCPRBF_STUDY_REEXEC"):
     """Re-run script (its __file__) under the project's OpenFOAM environment
-    if none is active."""
+    if none is active; flag: the environment variable that marks the re-run."""
     if os.environ.get("WM_PROJECT_DIR") and shutil.which("moveDynamicMesh"):
         return
     rc = os.path.join(TOP, "etc", "bashrc")
     if not os.path.isfile(rc):
         sys.exit("no OpenFOAM environment: run ./Allwmake at the top first")
-    if os.environ.get("DCPRBF_STUDY_REEXEC"):
+    if os.environ.get(flag):
         sys.exit("moveDynamicMesh not found after sourcing " + rc)
-    os.environ["DCPRBF_STUDY_REEXEC"] = "1"
+    os.environ[flag] = "1"
     cmd = 'source "%s" && exec %s "$@"' % (rc, PYTHON)
     os.execvp("bash", ["bash", "-c", cmd, "bash", os.path.abspath(script)] + sys.argv[1:])
 
 
-def sh(args, cwd, log):
+def sh(args, cwd, log, env=None):
+    """args run in cwd, output and errors to the file log, under env (None:
+    this process's); its exit code."""
     with open(log, "w") as f:
-        return subprocess.call(args, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
+        return subprocess.call(args, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, env=env)
 
 
 HEADER = """FoamFile
