@@ -113,9 +113,7 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
     ready_(false),
     updated_(false),
     warnedMaxPoints_(false),
-    nKept_(0),
-    leaving_(Eigen::RowVector3d::Zero()),
-    leavingReach_(0),
+    trials_(set_),
     blend_(settings.selection().swapBlendSteps),
     schedule_
     (
@@ -362,11 +360,11 @@ void Foam::dcpRBFControlPoints::endStep(const scalar minQuality)
          && changed.size() <= std::size_t(2*dcprbf::StoredEvaluation::maxPatchColumns);
         lastIndices_ = std::move(now);
     }
-    if (stepFrom_)
+    if (trials_.started())
     {
         // this step's swaps were kept
         schedule_.kept();
-        stepFrom_.reset();
+        trials_.confirm();
     }
     set_.nextStep();
     schedule_.endStep(minQuality);

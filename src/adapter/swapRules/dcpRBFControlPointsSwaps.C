@@ -86,73 +86,20 @@ bool Foam::dcpRBFControlPoints::proposeSwap
     const label skip
 )
 {
-    // Joining: near the worst cell, among the joinNeighbours nearest
-    // candidates, the one of largest error / distance
-    static const int joinNeighbours = 8;
-    const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
-    const Eigen::Index in = set_.mostInaccurateNear(worst.centre(), d, joinNeighbours, 1e-9*dMax);
-    if (in < 0)
-    {
-        return false;
-    }
-
-    // Leaving: the moving control point whose removal costs least (the
-    // errors first: the state a trial undone returns to keeps what they
-    // took, for the next trial on the same set)
-    const std::vector<Eigen::Index> order
-    (
-        set_.removalOrder(set_.leaveOneOutErrors(d))
-    );
-    std::unique_ptr<dcprbf::DynamicControlSet::State> before
-    (
-        new dcprbf::DynamicControlSet::State(set_.state())
-    );
-    label skipped = 0;
-    for (const Eigen::Index out : order)
-    {
-        if (skipped++ < skip)
-        {
-            continue;
-        }
-        if (set_.swap(in, out))
-        {
-            // where the interpolant loses a centre: its reach is the
-            // distance to the nearest remaining control point
-            leaving_ = boundary_.points().row(out);
-            leavingReach_ = GREAT;
-            for (const Eigen::Index j : set_.indices())
-            {
-                leavingReach_ = min
-                (
-                    leavingReach_,
-                    (boundary_.points().row(j) - leaving_).norm()
-                );
-            }
-            if (!stepFrom_)
-            {
-                stepFrom_.reset(new dcprbf::DynamicControlSet::State(*before));
-                nKept_ = 0;
-            }
-            trialFrom_ = std::move(before);
-            return true;
-        }
-    }
-    return false;
+    return trials_.propose(worst, d, skip);
 }
 
 
 void Foam::dcpRBFControlPoints::keepSwap()
 {
-    trialFrom_.reset();
-    ++nKept_;
+    trials_.keep();
     updated_ = true;
 }
 
 
 void Foam::dcpRBFControlPoints::undoSwap(const dcprbf::Values& d)
 {
-    set_.restore(*trialFrom_);
-    trialFrom_.reset();
+    trials_.undo();
     solve(d);
 }
 
@@ -163,24 +110,22 @@ Foam::label Foam::dcpRBFControlPoints::endTrials
     const bool blend
 )
 {
-    if (!stepFrom_)
+    if (!trials_.started())
     {
         return 0;
     }
-    const label kept = nKept_;
-    nKept_ = 0;
+    const label kept = trials_.end();
     if (kept == 0)
     {
         // the set fits the motion: try again later, less often while it does
-        stepFrom_.reset();
         schedule_.backOff();
         return 0;
     }
-    // stepFrom_ stays until endStep() (the swaps confirmed: the back-off
-    // starts over) or abandonSwaps()
+    // the trials stay started until endStep() (the swaps confirmed: the
+    // back-off starts over) or abandonSwaps()
     if (blend && settings_.selection().swapBlendSteps > 1)
     {
-        blend_.start(*stepFrom_);
+        blend_.start(trials_.stepStart());
         solve(d);
     }
     return kept;
@@ -189,12 +134,11 @@ Foam::label Foam::dcpRBFControlPoints::endTrials
 
 void Foam::dcpRBFControlPoints::abandonSwaps(const dcprbf::Values& d)
 {
-    if (!stepFrom_)
+    if (!trials_.started())
     {
         return;
     }
-    set_.restore(*stepFrom_);
-    stepFrom_.reset();
+    trials_.abandon();
     blend_.stop();
     updated_ = true;
     schedule_.backOff();
