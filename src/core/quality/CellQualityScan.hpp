@@ -33,6 +33,7 @@
 #include "TetBatch.hpp"
 #include "WorstBatch.hpp"
 #include "TetQuality.hpp"
+#include "CellQualityBound.hpp"
 
 #include <cstddef>
 #include <memory>
@@ -84,6 +85,28 @@ public:
     //  points and each thread's batches are kept)
     void measure(const double* p, double* q, bool wide = true) const;
 
+    //- The qualities that rank the k lowest cells for the points p, into
+    //  q: exact (as measure()) for every cell that may be among the k
+    //  lowest and for every inverted one; for each of the others a lower
+    //  bound of its quality (CellQualityBound) above the k-th lowest and
+    //  above 0. So the k lowest of q, the minimum and the cells of
+    //  quality <= 0 are those of measure(), bit for bit; a sum is not.
+    //  Cells are measured in the order of their bounds: those below the
+    //  k-th lowest bound, then those whose bound is not above the k-th
+    //  lowest quality so found (plus 1e-9). Returns the number of cells
+    //  measured. The bounds are set up on the first call
+    std::size_t measureLowest
+    (
+        const double* p,
+        double* q,
+        std::size_t k,
+        bool wide = true
+    ) const;
+
+    //- Each cell's lower bound (CellQualityBound) for the points p into lb
+    //  (the caller's order; -infinity: none)
+    void lowerBounds(const double* p, double* lb) const;
+
 private:
     //- How a cell is measured: from its vertices (a tetrahedron: one
     //  measure; a prism: detail::PrismBatch) or from its faces (general)
@@ -134,6 +157,16 @@ private:
     //  cells' entries only; cellFaces: entry numbers (the identity)
     void classify(std::vector<std::size_t>& cellStart);
 
+    //- Each cell's bound (in the order stored) and vertices (compact
+    //  numbering, compressed rows), set up by setUpBounds()
+    mutable std::vector<CellQualityBound> bounds_;
+    mutable std::vector<std::size_t> boundStart_;
+    mutable std::vector<int> boundVertices_;
+
+    //- measureLowest's scratch: the bounds, the cells to measure
+    mutable std::vector<double> lower_;
+    mutable std::vector<int> pick_;
+
     //- Cells measured at once
     static constexpr std::size_t blockCells = 256;
 
@@ -156,16 +189,35 @@ private:
     //  (allocating and clearing a block's batches each time costs ~0.1 ms)
     mutable std::vector<std::unique_ptr<Scratch>> scratch_;
 
-    //- The qualities of the m cells from i0 (at most blockCells) for the
-    //  compact current points x into q (the caller's order)
+    //- The qualities of the m cells (at most blockCells) at the stored
+    //  positions at[0 .. m) for the compact current points x into q (the
+    //  caller's order)
     void measureBlock
     (
-        std::size_t i0,
+        const int* at,
         std::size_t m,
         const double* x,
         Scratch& s,
         double* q
     ) const;
+
+    //- The current points p into the compact copy (in parallel if
+    //  parallel); the copy
+    const double* gather(const double* p, bool parallel) const;
+
+    //- This thread's scratch space
+    Scratch& scratch(bool wide) const;
+
+    //- The qualities of the cells at the stored positions at (ascending)
+    //  for the compact current points x into q
+    void measureCells(const std::vector<int>& at, const double* x, double* q, bool wide) const;
+
+    //- The bounds' set-up (bounds_, boundStart_, boundVertices_)
+    void setUpBounds() const;
+
+    //- Stored cell i's reference cell centre (the average of its face
+    //  centres) and kappa: the largest |E^-1|_F of its tetrahedra
+    double kappa(std::size_t i) const;
 
     //- Number of tetrahedra of general cell g
     std::size_t tetCount(std::size_t g) const;

@@ -81,7 +81,7 @@ void CellQualityScan::addTets
 
 void CellQualityScan::measureBlock
 (
-    const std::size_t i0,
+    const int* at,
     const std::size_t m,
     const double* x,
     Scratch& s,
@@ -96,7 +96,7 @@ void CellQualityScan::measureBlock
     std::size_t nTets = 0, nPrisms = 0;
     for (std::size_t c = 0; c < m; ++c)
     {
-        const std::size_t i = i0 + c;
+        const std::size_t i = std::size_t(at[c]);
         if (kind_[i] == prism)
         {
             s.first[c] = nPrisms++;
@@ -111,7 +111,7 @@ void CellQualityScan::measureBlock
     s.prisms.resize(nPrisms);
     for (std::size_t c = 0; c < m; ++c)
     {
-        const std::size_t i = i0 + c;
+        const std::size_t i = std::size_t(at[c]);
         if (kind_[i] == prism)
         {
             s.prisms.set(s.first[c], x0, x, &vertices_[std::size_t(slot_[i])]);
@@ -143,7 +143,7 @@ void CellQualityScan::measureBlock
     if (nPrisms) s.prisms.measure(metric_, s.finals.wide());
     for (std::size_t c = 0; c < m; ++c)
     {
-        const std::size_t i = i0 + c;
+        const std::size_t i = std::size_t(at[c]);
         detail::TetMeasures::Worst worst(metric_);
         if (kind_[i] != prism)
         {
@@ -171,7 +171,7 @@ void CellQualityScan::measureBlock
 }
 
 
-void CellQualityScan::measure(const double* p, double* q, const bool wide) const
+const double* CellQualityScan::gather(const double* p, const bool parallel) const
 {
     const long nPoints = long(pointIds_.size());
     // filled in parallel below: not value-initialised (a serial pass);
@@ -181,35 +181,81 @@ void CellQualityScan::measure(const double* p, double* q, const bool wide) const
         compact_.reset(new double[3*pointIds_.size()]);
     }
     double* const x = compact_.get();
-    const std::size_t n = size();
+    #pragma omp parallel for schedule(static) if(parallel)
+    for (long i = 0; i < nPoints; ++i)
+    {
+        const double* y = p + 3*std::size_t(pointIds_[i]);
+        x[3*i] = y[0];
+        x[3*i + 1] = y[1];
+        x[3*i + 2] = y[2];
+    }
+    return x;
+}
+
+
+CellQualityScan::Scratch& CellQualityScan::scratch(const bool wide) const
+{
+    std::unique_ptr<Scratch>& slot = scratch_[std::size_t(omp_get_thread_num())];
+    if (!slot || slot->finals.wide() != wide)
+    {
+        slot.reset(new Scratch(metric_, wide));
+    }
+    return *slot;
+}
+
+
+void CellQualityScan::measureCells
+(
+    const std::vector<int>& at,
+    const double* x,
+    double* q,
+    const bool wide
+) const
+{
+    const std::size_t n = at.size();
     const long nBlocks = long((n + blockCells - 1)/blockCells);
-    const std::size_t nThreads = n >= minParallelCells ? std::size_t(omp_get_max_threads()) : 1;
+    const bool parallel = n >= minParallelCells;
+    const std::size_t nThreads = parallel ? std::size_t(omp_get_max_threads()) : 1;
+    if (scratch_.size() < nThreads)
+    {
+        scratch_.resize(nThreads);
+    }
+    #pragma omp parallel if(parallel)
+    {
+        Scratch& s = scratch(wide);
+        #pragma omp for schedule(static, 8)
+        for (long b = 0; b < nBlocks; ++b)
+        {
+            const std::size_t i0 = std::size_t(b)*blockCells;
+            measureBlock(&at[i0], std::min(blockCells, n - i0), x, s, q);
+        }
+    }
+}
+
+
+void CellQualityScan::measure(const double* p, double* q, const bool wide) const
+{
+    const std::size_t n = size();
+    const double* x = gather(p, n >= minParallelCells);
+    const long nBlocks = long((n + blockCells - 1)/blockCells);
+    const bool parallel = n >= minParallelCells;
+    const std::size_t nThreads = parallel ? std::size_t(omp_get_max_threads()) : 1;
     if (scratch_.size() < nThreads)
     {
         scratch_.resize(nThreads);
     }
     // threads for a scan worth waking them (a sleeping thread takes ~0.1 ms)
-    #pragma omp parallel if(n >= minParallelCells)
+    #pragma omp parallel if(parallel)
     {
-        #pragma omp for schedule(static)
-        for (long i = 0; i < nPoints; ++i)
-        {
-            const double* y = p + 3*std::size_t(pointIds_[i]);
-            x[3*i] = y[0];
-            x[3*i + 1] = y[1];
-            x[3*i + 2] = y[2];
-        }
-        std::unique_ptr<Scratch>& slot = scratch_[std::size_t(omp_get_thread_num())];
-        if (!slot || slot->finals.wide() != wide)
-        {
-            slot.reset(new Scratch(metric_, wide));
-        }
-        Scratch& s = *slot;
+        Scratch& s = scratch(wide);
+        int at[blockCells];
         #pragma omp for schedule(static, 8)
         for (long b = 0; b < nBlocks; ++b)
         {
             const std::size_t i0 = std::size_t(b)*blockCells;
-            measureBlock(i0, std::min(blockCells, n - i0), x, s, q);
+            const std::size_t m = std::min(blockCells, n - i0);
+            for (std::size_t c = 0; c < m; ++c) at[c] = int(i0 + c);
+            measureBlock(at, m, x, s, q);
         }
     }
 }
