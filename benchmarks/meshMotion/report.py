@@ -10,6 +10,8 @@ BEGIN = "<!-- meshMotion: begin (written by benchmarks/meshMotion/run) -->"
 END = "<!-- meshMotion: end -->"
 FINE_BEGIN = "<!-- meshMotion fine wing: begin (written by benchmarks/meshMotion/run --fine-wing) -->"
 FINE_END = "<!-- meshMotion fine wing: end -->"
+HEX_BEGIN = "<!-- meshMotion hex-dominant: begin (written by benchmarks/meshMotion/hexDominant) -->"
+HEX_END = "<!-- meshMotion hex-dominant: end -->"
 
 
 def write_readme(begin, end, report):

@@ -27,6 +27,7 @@ Foam::dcpRBFQualityMeasurement::dcpRBFQualityMeasurement
     pointDisplacement_(pointDisplacement),
     points0_(points0),
     nRanked_(max(label(1), nSwap)),
+    nLowest_(-1),
     measured_(false),
     measuredInStep_(false),
     checkTime_(0),
@@ -39,7 +40,8 @@ Foam::dcpRBFQualityMeasurement::dcpRBFQualityMeasurement
 void Foam::dcpRBFQualityMeasurement::measureRegion(const pointField& p)
 {
     // the qualities into the last measurement's storage
-    last_ = region_.measure(p, nRanked_, std::move(last_.quality));
+    const label lowest = mesh_.time().writeTime() ? -1 : nLowest_;
+    last_ = region_.measure(p, nRanked_, std::move(last_.quality), lowest);
 }
 
 

@@ -120,6 +120,11 @@ void Foam::dcpRBFMotionSolver::construct()
         )
     );
 
+    if (s.scanLowest())
+    {
+        quality_->measureLowest(swapRule_->lowestCells(region_->nChecked()));
+    }
+
     setThreads();
     prescribed_->checkPatches(coeffDict());
     checkSetSize();

@@ -284,4 +284,22 @@ void Foam::dcpRBFCellQuality::compute(const pointField& p, scalarField& q) const
 }
 
 
+Foam::label Foam::dcpRBFCellQuality::computeLowest
+(
+    const pointField& p,
+    scalarField& q,
+    const label k
+) const
+{
+    if (!scan_.valid() || planarScan_.valid() || scanned_.size() != nCells_)
+    {
+        // 2D (or mixed) cells: every cell measured
+        compute(p, q);
+        return nCells_;
+    }
+    q.setSize(nCells_);
+    return label(scan_->measureLowest(xyz(p), q.data(), std::size_t(max(k, label(1)))));
+}
+
+
 // ************************************************************************* //

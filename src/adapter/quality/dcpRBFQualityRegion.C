@@ -200,11 +200,19 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
 (
     const pointField& p,
     const label n,
-    scalarField&& reuse
+    scalarField&& reuse,
+    const label nLowest
 ) const
 {
     scalarField q(std::move(reuse));
-    quality_->compute(p, q);
+    if (nLowest >= 0)
+    {
+        quality_->computeLowest(p, q, max(n, nLowest));
+    }
+    else
+    {
+        quality_->compute(p, q);
+    }
 
     // Per block of cells (fixed, whatever the thread count: the sum and
     // so the mean are the same on any number of threads): the number
@@ -345,6 +353,12 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     s.lowest = globalLowest(lowestHere);
     s.hasLowest = s.lowest.quality() < GREAT;
     s.checkedMin = s.hasLowest ? s.lowest.quality() : 1;
+    if (nLowest >= 0)
+    {
+        // bounds in place of qualities: no means, no best cells
+        s.meanQuality = s.checkedMean = std::numeric_limits<scalar>::quiet_NaN();
+        s.best.clear();
+    }
     s.quality.transfer(q);
     return s;
 }

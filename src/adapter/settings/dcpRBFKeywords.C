@@ -83,6 +83,11 @@ const std::vector<K>& table()
         coeffs, "qualityMetric", "sizeShape", metrics,
         "the cell quality measured, logged and guarded"
     ),
+    K::choice
+    (
+        coeffs, "qualityScan", "all", "all lowest",
+        "every cell's quality each step, or the lowest cells' only"
+    ),
     K::real
     (
         coeffs, "qualityFloor", 0, -1, false, 1, false,

@@ -316,6 +316,7 @@ Foam::dcpRBFSettings::dcpRBFSettings
     }
 
     metric_ = r.getEnum(key("qualityMetric"), metricNames);
+    scanLowest_ = r.getChoice(key("qualityScan")) == 1;
     qualityFloor_ = r.getScalar(key("qualityFloor"));
     floorAction_ = r.getEnum(key("qualityFloorAction"), floorActionNames);
     guardIterations_ = r.getLabel(key("guardIterations"));

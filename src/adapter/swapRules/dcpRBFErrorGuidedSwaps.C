@@ -89,6 +89,16 @@ void Foam::dcpRBFErrorGuidedSwaps::afterInterpolate
 }
 
 
+Foam::label Foam::dcpRBFErrorGuidedSwaps::lowestCells(const label nCells) const
+{
+    const label k = dcpRBFSwapRule::lowestCells(nCells);
+    return
+        settings_.selection().selection == dcpRBFSelectionSettings::mode::dynamic
+      ? max(k, max(minTrialWindow, label(trialWindowFraction*nCells)) + 1)
+      : k;
+}
+
+
 Foam::scalar Foam::dcpRBFErrorGuidedSwaps::interpolate(const dcprbf::Values& d)
 {
     quality_.changed();

@@ -45,6 +45,14 @@ Foam::dcpRBFNearestSwaps::dcpRBFNearestSwaps
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::label Foam::dcpRBFNearestSwaps::lowestCells(const label nCells) const
+{
+    return
+        settings_.selection().selection == dcpRBFSelectionSettings::mode::dynamic
+      ? -1 : dcpRBFSwapRule::lowestCells(nCells);
+}
+
+
 void Foam::dcpRBFNearestSwaps::beforeSolve(dcpRBFStepState& step)
 {
     if (controlPoints_.ready() && controlPoints_.swapsBeforeSolve())

@@ -42,6 +42,15 @@ Foam::dcpRBFSwapRule::dcpRBFSwapRule
 {}
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::dcpRBFSwapRule::lowestCells(const label) const
+{
+    // outside selection dynamic no rule swaps: the guard's worst cell
+    return max(label(1), settings_.selection().nSwap);
+}
+
+
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
 Foam::autoPtr<Foam::dcpRBFSwapRule> Foam::dcpRBFSwapRule::New

@@ -178,6 +178,38 @@ TEST(CellQualityBound, NeverAboveTheQualityOfAnyKindOfCell)
 }
 
 
+TEST(CellQualityBound, NeverAboveTheQualityWhenOneVertexMovesAlone)
+{
+    // each vertex of each cell moved alone (the others fixed: the fit of
+    // the others is exact, so every vertex must enter the bound)
+    const Cells cells(1);
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (const auto m : metrics)
+    {
+        const CellQualityScan scan(cells.scan(m));
+        std::vector<double> q(scan.size()), lb(scan.size());
+        int nBounded = 0;
+        for (std::size_t v = 0; v < cells.points.size()/3; ++v)
+        {
+            for (const double d : {0.01, 0.05, 0.2})
+            {
+                std::vector<double> p(cells.points);
+                for (int k = 0; k < 3; ++k) p[3*v + k] += d*u(gen);
+                scan.measure(p.data(), q.data());
+                scan.lowerBounds(p.data(), lb.data());
+                for (std::size_t c = 0; c < q.size(); ++c)
+                {
+                    EXPECT_LE(lb[c], q[c]) << "cell " << c << " point " << v << " by " << d;
+                    nBounded += std::isfinite(lb[c]) && q[c] < 1 - 1e-3;
+                }
+            }
+        }
+        EXPECT_GT(nBounded, 20);
+    }
+}
+
+
 TEST(CellQualityBound, NoBoundForAnInvertingFitOrAPoorOne)
 {
     const double inf = std::numeric_limits<double>::infinity();

@@ -1,0 +1,155 @@
+/*---------------------------------------------------------------------------*\
+  dcpRBF tests
+-------------------------------------------------------------------------------
+License
+    This file is part of dcpRBF. Copyright (C) 2026 the dcpRBF authors.
+    GPL-3.0-or-later: see the LICENSE file at the top of the repository.
+-------------------------------------------------------------------------------
+Description
+    qualityScan lowest (the worst cells measured exactly, the others
+    bounded) against qualityScan all on a 3D box of hexahedra whose bottom
+    wall bulges: the same points at every step, bit for bit, and the same
+    rows of dcpRBF.dat (control points, guard, minimum quality, inverted
+    cells, boundary error, trials undone) but the mean quality, which is
+    nan at the steps that are not written and the same at those that are.
+\*---------------------------------------------------------------------------*/
+
+#include "testHelpers.H"
+#include "bumpRun.H"
+#include "dcpRBFMotionSolver.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+using namespace Foam;
+using namespace Foam::dcpRBFTest;
+
+namespace
+{
+
+//- The rows of dcpRBF.dat, nan included
+std::vector<std::vector<double>> rowsWithNan(const testCase& c)
+{
+    std::vector<std::vector<double>> rows;
+    std::ifstream is(c.dir()/"postProcessing"/"dcpRBF"/"0"/"dcpRBF.dat");
+    std::string line;
+    while (std::getline(is, line))
+    {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream ls(line);
+        std::vector<double> row;
+        std::string word;
+        while (ls >> word) row.push_back(std::stod(word));
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+struct scanRun
+{
+    std::vector<pointField> points;
+    std::vector<std::vector<double>> rows;
+};
+
+//- The bulge a sin(pi x) sin(pi z), a = 0.045 x step, on the bottom wall
+//  of a 10^3 box (cells thinner at the bottom), writing every 4th step
+scanRun bulge(const std::string& controlPoints, const std::string& scan, const label nSteps)
+{
+    testCase c
+    (
+        3, 10,
+        "movingPatches (bottom); staticPatches (top left right front back);"
+        " supportRadius 0.8; qualityScan " + scan + ";"
+        " controlPoints { " + controlPoints + " }",
+        "wall", "{ type fixedValue; value uniform (0 0 0); }", "(1 10 1)"
+    );
+    c.write
+    (
+        "system/controlDict", "dictionary",
+        "application moveDynamicMesh; startFrom startTime; startTime 0;"
+        " stopAt endTime; endTime 100; deltaT 1; writeControl timeStep;"
+        " writeInterval 4; writeFormat ascii; writePrecision 17;"
+        " timeFormat general; timePrecision 6; runTimeModifiable false;"
+    );
+    c.runTime().read();
+    autoPtr<motionSolver> ms(select(c));
+    scanRun r;
+    for (label step = 1; step <= nSteps; ++step)
+    {
+        ++c.runTime();
+        const scalar a = 0.045*step;
+        prescribe(refCast<dcpRBFMotionSolver>(ms()).pointDisplacement(), "bottom", [a](const point& x)
+        {
+            const scalar pi = constant::mathematical::pi;
+            return vector(0, a*std::sin(pi*x.x())*std::sin(pi*x.z()), 0);
+        });
+        const pointField p(ms->newPoints());
+        c.mesh().movePoints(p);
+        r.points.push_back(p);
+    }
+    r.rows = rowsWithNan(c);
+    return r;
+}
+
+} // namespace
+
+
+TEST(QualityScan, LowestGivesAllsPointsAndLogButTheMean)
+{
+    const label nSteps = 9;
+    for
+    (
+        const std::string cp :
+        {
+            "selection greedy; tolerance 1e-2;",
+            "selection dynamic; tolerance 1e-2; nSwap 2;",
+            "selection dynamic; tolerance 1e-2; swapRule nearest; nSwap 2;"
+        }
+    )
+    {
+        const scanRun all(bulge(cp, "all", nSteps)), lowest(bulge(cp, "lowest", nSteps));
+        ASSERT_EQ(all.rows.size(), std::size_t(nSteps)) << cp;
+        ASSERT_EQ(lowest.rows.size(), std::size_t(nSteps)) << cp;
+        bool someInverted = false;
+        for (label s = 0; s < nSteps; ++s)
+        {
+            EXPECT_TRUE(all.points[s] == lowest.points[s]) << cp << " step " << s + 1;
+            const auto& a = all.rows[s];
+            const auto& l = lowest.rows[s];
+            ASSERT_EQ(a.size(), l.size());
+            for
+            (
+                const int col :
+                {
+                    int(cControl), int(cAdded), int(cRemoved), int(cGuard),
+                    int(cCells), int(cMinQ), int(cError), int(cAtMax),
+                    int(cUndone), 16
+                }
+            )
+            {
+                EXPECT_EQ(a[col], l[col]) << cp << " step " << s + 1 << " column " << col;
+            }
+            someInverted = someInverted || a[16] > 0;
+            // the mean: at the written steps (every 4th) the same; else
+            // nan with lowest, unless every cell was measured (nearest)
+            const bool written = (s + 1) % 4 == 0;
+            const bool nearest = cp.find("nearest") != std::string::npos;
+            if (written || nearest)
+            {
+                EXPECT_EQ(a[cMeanQ], l[cMeanQ]) << cp << " step " << s + 1;
+            }
+            else
+            {
+                EXPECT_TRUE(std::isnan(l[cMeanQ])) << cp << " step " << s + 1;
+            }
+        }
+        // the bulge folds cells near the wall by the last steps
+        EXPECT_TRUE(someInverted) << cp;
+    }
+}
+
+
+// ************************************************************************* //
