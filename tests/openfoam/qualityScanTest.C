@@ -17,6 +17,8 @@ Description
 #include "testHelpers.H"
 #include "bumpRun.H"
 #include "dcpRBFMotionSolver.H"
+#include "dcpRBFQualityRegion.H"
+#include "dcpRBFPlaneProjection.H"
 
 #include <gtest/gtest.h>
 
@@ -148,6 +150,62 @@ TEST(QualityScan, LowestGivesAllsPointsAndLogButTheMean)
         }
         // the bulge folds cells near the wall by the last steps
         EXPECT_TRUE(someInverted) << cp;
+    }
+}
+
+
+TEST(QualityScan, RegionsLowestCellsAsTheFullMeasurement)
+{
+    // dcpRBFQualityRegion::measure with nLowest: its qualities' nLowest
+    // lowest (positions and values), the n worst, the minima and the
+    // inverted counts as the full measurement's
+    testCase c
+    (
+        3, 12,
+        "movingPatches (bottom); staticPatches (top left right front back);"
+        " supportRadius 0.8;",
+        "wall", "{ type fixedValue; value uniform (0 0 0); }", "(1 10 1)"
+    );
+    const polyMesh& mesh = c.mesh();
+    const pointField& p0 = mesh.points();
+    const dcpRBFPlaneProjection projection(mesh);
+    const dcpRBFQualityRegion region
+    (
+        mesh, projection, p0, projection.toCore(p0), dcprbf::Points(0, 3),
+        GREAT, false, dcprbf::TetQuality::Metric::sizeShape
+    );
+    for (const scalar a : {0.05, 0.3})
+    {
+        // a bulge of the bottom wall, fading upwards
+        pointField p(p0);
+        forAll(p, i)
+        {
+            const scalar pi = constant::mathematical::pi;
+            p[i].y() += a*std::sin(pi*p0[i].x())*std::sin(pi*p0[i].z())*std::exp(-8*p0[i].y());
+        }
+        const dcpRBFQualityRegion::summary all(region.measure(p, 3));
+        for (const label k : {1, 40, 300})
+        {
+            const dcpRBFQualityRegion::summary low(region.measure(p, 3, scalarField(), k));
+            EXPECT_EQ(low.minQuality, all.minQuality);
+            EXPECT_EQ(low.nInverted, all.nInverted);
+            EXPECT_EQ(low.checkedMin, all.checkedMin);
+            EXPECT_EQ(low.checkedInverted, all.checkedInverted);
+            ASSERT_EQ(low.worst.size(), all.worst.size());
+            forAll(all.worst, j)
+            {
+                EXPECT_TRUE(low.worst[j] == all.worst[j]) << "worst " << j;
+            }
+            EXPECT_TRUE(std::isnan(low.meanQuality));
+            labelList byAll(identity(all.quality.size())), byLow(byAll);
+            std::stable_sort(byAll.begin(), byAll.end(), [&](label i, label j) { return all.quality[i] < all.quality[j]; });
+            std::stable_sort(byLow.begin(), byLow.end(), [&](label i, label j) { return low.quality[i] < low.quality[j]; });
+            for (label j = 0; j < k; ++j)
+            {
+                EXPECT_EQ(byAll[j], byLow[j]) << "a " << a << " k " << k << " rank " << j;
+                EXPECT_EQ(all.quality[byAll[j]], low.quality[byLow[j]]) << "rank " << j;
+            }
+        }
     }
 }
 
