@@ -23,32 +23,12 @@ Description
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 using namespace Foam;
 using namespace Foam::dcpRBFTest;
 
 namespace
 {
-
-//- The rows of dcpRBF.dat, nan included
-std::vector<std::vector<double>> rowsWithNan(const testCase& c)
-{
-    std::vector<std::vector<double>> rows;
-    std::ifstream is(c.dir()/"postProcessing"/"dcpRBF"/"0"/"dcpRBF.dat");
-    std::string line;
-    while (std::getline(is, line))
-    {
-        if (line.empty() || line[0] == '#') continue;
-        std::istringstream ls(line);
-        std::vector<double> row;
-        std::string word;
-        while (ls >> word) row.push_back(std::stod(word));
-        rows.push_back(row);
-    }
-    return rows;
-}
 
 struct scanRun
 {
@@ -92,7 +72,7 @@ scanRun bulge(const std::string& controlPoints, const std::string& scan, const l
         c.mesh().movePoints(p);
         r.points.push_back(p);
     }
-    r.rows = rowsWithNan(c);
+    r.rows = stepRows(c);
     return r;
 }
 

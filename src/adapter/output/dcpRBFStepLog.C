@@ -86,6 +86,11 @@ void Foam::dcpRBFStepLog::write
     line<< (r.rescue ? ", rescue" : "") << "), quality min "
         << q.checkedMin << " mean " << q.checkedMean << " (" << q.nChecked
         << " cells checked";
+    if (quality && q.nMeasured < q.nCells)
+    {
+        // qualityScan lowest: the region's cells measured exactly
+        line<< ", " << q.nMeasured << " of " << q.nCells << " measured";
+    }
     if (q.checkedInverted)
     {
         line<< ", " << q.checkedInverted << " inverted";

@@ -205,9 +205,10 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
 ) const
 {
     scalarField q(std::move(reuse));
+    label nMeasured = q.size();
     if (nLowest >= 0)
     {
-        quality_->computeLowest(p, q, max(n, nLowest));
+        nMeasured = quality_->computeLowest(p, q, max(n, nLowest));
     }
     else
     {
@@ -346,6 +347,7 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     if (leastAt >= 0) lowestHere = ranked(leastAt);
     outer_->accumulate(p, outerInverted, outerSum, lowestHere);
     s.nChecked = nChecked_;
+    s.nMeasured = returnReduce(nMeasured, sumOp<label>());
     s.checkedInverted = s.nInverted + returnReduce(outerInverted, sumOp<label>());
     s.checkedMean =
         s.nChecked

@@ -167,6 +167,9 @@ private:
     mutable std::vector<double> lower_;
     mutable std::vector<int> pick_;
 
+    //- Every cell's position (0, 1, ...: measure()'s list)
+    mutable std::vector<int> every_;
+
     //- Cells measured at once
     static constexpr std::size_t blockCells = 256;
 

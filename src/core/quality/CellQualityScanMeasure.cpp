@@ -220,6 +220,7 @@ void CellQualityScan::measureCells
     {
         scratch_.resize(nThreads);
     }
+    // threads for a scan worth waking them (a sleeping thread takes ~0.1 ms)
     #pragma omp parallel if(parallel)
     {
         Scratch& s = scratch(wide);
@@ -235,29 +236,13 @@ void CellQualityScan::measureCells
 
 void CellQualityScan::measure(const double* p, double* q, const bool wide) const
 {
-    const std::size_t n = size();
-    const double* x = gather(p, n >= minParallelCells);
-    const long nBlocks = long((n + blockCells - 1)/blockCells);
-    const bool parallel = n >= minParallelCells;
-    const std::size_t nThreads = parallel ? std::size_t(omp_get_max_threads()) : 1;
-    if (scratch_.size() < nThreads)
+    // every cell, in the order stored
+    if (every_.size() != size())
     {
-        scratch_.resize(nThreads);
+        every_.resize(size());
+        for (std::size_t i = 0; i < every_.size(); ++i) every_[i] = int(i);
     }
-    // threads for a scan worth waking them (a sleeping thread takes ~0.1 ms)
-    #pragma omp parallel if(parallel)
-    {
-        Scratch& s = scratch(wide);
-        int at[blockCells];
-        #pragma omp for schedule(static, 8)
-        for (long b = 0; b < nBlocks; ++b)
-        {
-            const std::size_t i0 = std::size_t(b)*blockCells;
-            const std::size_t m = std::min(blockCells, n - i0);
-            for (std::size_t c = 0; c < m; ++c) at[c] = int(i0 + c);
-            measureBlock(at, m, x, s, q);
-        }
-    }
+    measureCells(every_, gather(p, size() >= minParallelCells), q, wide);
 }
 
 } // namespace dcprbf
