@@ -83,13 +83,15 @@ double CellQualityBound::inverseNorm(const double* e0, const double* e1, const d
         return infinity;
     }
     // |E^-1|_2 = 1/(the least singular value of E): E^T E's least
-    // eigenvalue, from below (converged)
+    // eigenvalue, from below (converged); its characteristic polynomial
+    // loses digits for an ill-conditioned E (1e-9 relative at a condition
+    // number of 1e8): the norm raised by 1e-6 relative, from above
     const double C[6] =
     {
         dot(e0, e0), dot(e0, e1), dot(e0, e2), dot(e1, e1), dot(e1, e2), dot(e2, e2)
     };
     const double l = leastEigenvalueBelow(C, 100);
-    return l > 0 ? 1/std::sqrt(l) : infinity;
+    return l > 0 ? (1 + 1e-6)/std::sqrt(l) : infinity;
 }
 
 
