@@ -205,7 +205,7 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
 ) const
 {
     scalarField q(std::move(reuse));
-    label nMeasured = q.size();
+    label nMeasured = 0;
     if (nLowest >= 0)
     {
         nMeasured = quality_->computeLowest(p, q, max(n, nLowest));
@@ -213,6 +213,7 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     else
     {
         quality_->compute(p, q);
+        nMeasured = q.size();
     }
 
     // Per block of cells (fixed, whatever the thread count: the sum and
@@ -355,9 +356,10 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     s.lowest = globalLowest(lowestHere);
     s.hasLowest = s.lowest.quality() < GREAT;
     s.checkedMin = s.hasLowest ? s.lowest.quality() : 1;
-    if (nLowest >= 0)
+    if (s.nMeasured < s.nCells)
     {
-        // bounds in place of qualities: no means, no best cells
+        // bounds in place of qualities (the same on every rank: global
+        // counts): no means, no best cells
         s.meanQuality = s.checkedMean = std::numeric_limits<scalar>::quiet_NaN();
         s.best.clear();
     }

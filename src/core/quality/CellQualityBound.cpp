@@ -30,20 +30,22 @@ inline void mean(const double* x, const int* v, const int nv, double m[3], doubl
     for (int d = 0; d < 3; ++d) m[d] /= nv;
 }
 
-//- A lower bound of the least eigenvalue of the symmetric positive
-//  semi-definite C (xx xy xz yy yz zz), within round-off of it after n
-//  Newton steps on its characteristic polynomial p(l) = l^3 - c1 l^2 +
-//  c2 l - c3 from c3/c2 (<= the least eigenvalue l1, as c2 >= l2 l3):
-//  p is increasing and concave up to l1 (l1 <= c1/3), so each step stays
-//  below l1
-inline double leastEigenvalueBelow(const double C[6], const int n)
+//- A lower bound of the least singular value squared of the 3 x 3 matrix
+//  M, given by the coefficients of the characteristic polynomial of M^T M,
+//  p(l) = l^3 - c1 l^2 + c2 l - c3: c1 = |M|_F^2, c2 = |adj M|_F^2 (the
+//  squared 2 x 2 minors), c3 = det(M)^2, each computed from M itself (not
+//  from M^T M, whose forming loses digits as cond(M)^2). Newton steps from
+//  c3/c2 (<= the least eigenvalue l1, as c2 >= l2 l3): p is increasing and
+//  concave up to l1 (l1 <= c1/3), so each step stays below l1; within a
+//  relative 1e-12 of it after n steps (and u cond(M) from det(M))
+inline double leastSquaredSingularValueBelow
+(
+    const double c1,
+    const double c2,
+    const double c3,
+    const int n
+)
 {
-    const double c1 = C[0] + C[3] + C[5];
-    const double c2 =
-        C[0]*C[3] - C[1]*C[1] + C[0]*C[5] - C[2]*C[2] + C[3]*C[5] - C[4]*C[4];
-    const double c3 =
-        C[0]*(C[3]*C[5] - C[4]*C[4]) - C[1]*(C[1]*C[5] - C[4]*C[2])
-      + C[2]*(C[1]*C[4] - C[3]*C[2]);
     if (!(c3 > 0) || !(c2 > 0))
     {
         return 0;
@@ -82,16 +84,24 @@ double CellQualityBound::inverseNorm(const double* e0, const double* e1, const d
     {
         return infinity;
     }
-    // |E^-1|_2 = 1/(the least singular value of E): E^T E's least
-    // eigenvalue, from below (converged); its characteristic polynomial
-    // loses digits for an ill-conditioned E (1e-9 relative at a condition
-    // number of 1e8): the norm raised by 1e-6 relative, from above
-    const double C[6] =
+    // |E^-1|_2 = 1/(the least singular value of E), from E's own
+    // coefficients; at most |E^-1|_F = |adj E|_F/|det E| (rigorous, up to
+    // sqrt(3) loose: the bound for a badly conditioned E). Raised by the
+    // round-off of det E (u cond(E), cond(E) <= |E|_F |E^-1|_F)
+    const double a1[3] =
     {
-        dot(e0, e0), dot(e0, e1), dot(e0, e2), dot(e1, e1), dot(e1, e2), dot(e2, e2)
+        e2[1]*e0[2] - e2[2]*e0[1], e2[2]*e0[0] - e2[0]*e0[2], e2[0]*e0[1] - e2[1]*e0[0]
     };
-    const double l = leastEigenvalueBelow(C, 100);
-    return l > 0 ? (1 + 1e-6)/std::sqrt(l) : infinity;
+    const double a2[3] =
+    {
+        e0[1]*e1[2] - e0[2]*e1[1], e0[2]*e1[0] - e0[0]*e1[2], e0[0]*e1[1] - e0[1]*e1[0]
+    };
+    const double adj2 = dot(c, c) + dot(a1, a1) + dot(a2, a2);
+    const double E2 = dot(e0, e0) + dot(e1, e1) + dot(e2, e2);
+    const double frobenius = std::sqrt(adj2)/std::abs(det0);
+    const double margin = 1 + 1e-13*std::sqrt(E2)*frobenius;
+    const double l = leastSquaredSingularValueBelow(E2, adj2, det0*det0, 100);
+    return margin*(l > 0 ? std::min(frobenius, 1/std::sqrt(l)) : frobenius);
 }
 
 
@@ -239,14 +249,22 @@ double CellQualityBound::lower
         T[0][0]*(T[1][1]*T[2][2] - T[1][2]*T[2][1])
       - T[0][1]*(T[1][0]*T[2][2] - T[1][2]*T[2][0])
       + T[0][2]*(T[1][0]*T[2][1] - T[1][1]*T[2][0]);
-    // the least singular value of T from below: T^T T's least eigenvalue
-    double C[6] = {0, 0, 0, 0, 0, 0};
+    // the least singular value of T from below (its 2 x 2 minors squared:
+    // |adj T|_F^2), lowered by det T's round-off (u cond(T), cond(T) <=
+    // |T|_F^2 / s)
+    double adj2 = 0;
     for (int i = 0; i < 3; ++i)
     {
-        C[0] += T[i][0]*T[i][0]; C[1] += T[i][0]*T[i][1]; C[2] += T[i][0]*T[i][2];
-        C[3] += T[i][1]*T[i][1]; C[4] += T[i][1]*T[i][2]; C[5] += T[i][2]*T[i][2];
+        const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        for (int j = 0; j < 3; ++j)
+        {
+            const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const double m = T[i1][j1]*T[i2][j2] - T[i1][j2]*T[i2][j1];
+            adj2 += m*m;
+        }
     }
-    const double s = std::sqrt(leastEigenvalueBelow(C, 4));
+    double s = std::sqrt(leastSquaredSingularValueBelow(F2, adj2, J*J, 4));
+    s *= std::max(0.0, 1 - 1e-13*F2/std::max(s*s, 1e-300));
     return fromMap(J, F2, s, 2*std::sqrt(3.0)*r*kappa_, metric);
 }
 

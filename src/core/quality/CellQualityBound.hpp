@@ -14,8 +14,9 @@
 // once). Every matrix that close to T has J = det >= det T (1 - eps/s)^3,
 // with s <= the least singular value of T (T^T T's least eigenvalue from
 // below, Newton steps on its characteristic polynomial), J <= det T
-// (1 + eps/s)^3 and |A|_F <= |T|_F + sqrt(3) eps; the quality, monotonic in
-// each of them, is then bounded below by its value at the worst of them. A
+// (1 + eps/s)^3 and |A|_F <= |T|_F + sqrt(3) eps; each factor of the
+// quality is then bounded below at the worst of them (min(J, 1/J) by
+// min(Jlo, 1/Jhi), J^(2/3)/|A|_F^2 by Jlo^(2/3)/(|T|_F + sqrt(3) eps)^2). A
 // cell moved rigidly or affinely (r = 0) is bounded by its exact quality; a
 // cell whose fit is too poor (eps >= s) or that T inverts has no bound
 // (-infinity): it must be measured. The bound is lowered by a relative
@@ -51,8 +52,8 @@ public:
     static double fromMap(double J, double F2, double s, double eps, TetQuality::Metric m);
 
     //- |E^-1|_2 of the tetrahedron with reference edges e0 e1 e2 (from its
-    //  first vertex; to round-off, from above), infinity if degenerate
-    //  (TetMeasures' test)
+    //  first vertex), from above: to round-off for a well-conditioned E,
+    //  at most |E^-1|_F; infinity if degenerate (TetMeasures' test)
     static double inverseNorm(const double* e0, const double* e1, const double* e2);
 
     //- Is the cell bounded at all?

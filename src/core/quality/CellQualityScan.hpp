@@ -218,8 +218,8 @@ private:
     //- The bounds' set-up (bounds_, boundStart_, boundVertices_)
     void setUpBounds() const;
 
-    //- Stored cell i's reference cell centre (the average of its face
-    //  centres) and kappa: the largest |E^-1|_F of its tetrahedra
+    //- Stored cell i's kappa: the largest |E^-1|_2 of its tetrahedra
+    //  (CellQualityBound::inverseNorm)
     double kappa(std::size_t i) const;
 
     //- Number of tetrahedra of general cell g

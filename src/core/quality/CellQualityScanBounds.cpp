@@ -161,10 +161,12 @@ void CellQualityScan::lowerBounds(const double* p, double* lb) const
     {
         const std::size_t i = std::size_t(li);
         const int* v = boundVertices_.data() + boundStart_[i];
-        lb[order_[i]] = bounds_[i].lower
+        const double b = bounds_[i].lower
         (
             x0, x, v, int(boundStart_[i + 1] - boundStart_[i]), metric_
         );
+        // (not-a-number, from points that are: no bound)
+        lb[order_[i]] = b == b ? b : -std::numeric_limits<double>::infinity();
     }
 }
 
@@ -225,6 +227,12 @@ std::size_t CellQualityScan::measureLowest
     for (std::size_t i = 0; i < n; ++i)
     {
         if (measured[i]) sorted.push_back(q[order_[i]]);
+    }
+    if (sorted.empty())
+    {
+        // (not reached: at least k bounds are at most the k-th lowest)
+        measure(p, q, wide);
+        return n;
     }
     const std::size_t j = std::min(std::max<std::size_t>(k, 1), sorted.size()) - 1;
     std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(j), sorted.end());
