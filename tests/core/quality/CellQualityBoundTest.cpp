@@ -214,7 +214,7 @@ TEST(CellQualityBound, NeverAboveTheQualityWhenOneVertexMovesAlone)
 TEST(CellQualityBound, InverseNormIsTheReciprocalLeastSingularValue)
 {
     // |E^-1|_2 = 1/sigma_min(E), against Eigen's SVD: from above, within
-    // the 1e-6 it is raised by
+    // its round-off margin (u cond(E))
     std::mt19937 gen(5);
     std::uniform_real_distribution<double> u(-1, 1);
     for (int t = 0; t < 500; ++t)
