@@ -259,8 +259,8 @@ double CellQualityBound::lower
         for (int j = 0; j < 3; ++j)
         {
             const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            const double m = T[i1][j1]*T[i2][j2] - T[i1][j2]*T[i2][j1];
-            adj2 += m*m;
+            const double minor = T[i1][j1]*T[i2][j2] - T[i1][j2]*T[i2][j1];
+            adj2 += minor*minor;
         }
     }
     double s = std::sqrt(leastSquaredSingularValueBelow(F2, adj2, J*J, 4));
