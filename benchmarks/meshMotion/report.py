@@ -12,6 +12,8 @@ FINE_BEGIN = "<!-- meshMotion fine wing: begin (written by benchmarks/meshMotion
 FINE_END = "<!-- meshMotion fine wing: end -->"
 HEX_BEGIN = "<!-- meshMotion hex-dominant: begin (written by benchmarks/meshMotion/hexDominant) -->"
 HEX_END = "<!-- meshMotion hex-dominant: end -->"
+SCALE_BEGIN = "<!-- meshMotion scaling: begin (written by benchmarks/meshMotion/scaling) -->"
+SCALE_END = "<!-- meshMotion scaling: end -->"
 
 
 def write_readme(begin, end, report):

@@ -8,6 +8,7 @@ License
 
 #include "dcpRBFControlPoints.H"
 #include "GreedySelector.hpp"
+#include "dcpRBFPstreamCollective.H"
 #include "Time.H"
 #include "dcpRBFVersion.H"
 
@@ -63,7 +64,16 @@ void Foam::dcpRBFControlPoints::greedy(const dcprbf::Values& d)
     o.maxPoints = s.maxPoints;
     o.doubleEdged = s.doubleEdged;
     const dcprbf::GreedySelector g(settings_.kernel(), settings_.polynomial(), dim_, o);
-    dcprbf::GreedyResult r(g.select(boundary_.points(), target));
+    // In parallel the selection's candidates (and its Nb x N basis) are
+    // divided over the processors, in blocks of the global set's canonical
+    // order: the same result as in serial, on every processor
+    const label nb = boundary_.size();
+    const label begin = nb*Pstream::myProcNo()/Pstream::nProcs();
+    const label end = nb*(Pstream::myProcNo() + 1)/Pstream::nProcs();
+    const dcprbf::Points x(boundary_.points().middleRows(begin, end - begin));
+    const dcprbf::Values t(target.middleRows(begin, end - begin));
+    const dcpRBFPstreamCollective comm;
+    dcprbf::GreedyResult r(g.select(dcprbf::CandidateRows(comm, x, t)));
     Info<< "dcpRBF: greedy selection of " << r.selected.size() << " of "
         << boundary_.size() << " boundary points, relative error "
         << r.historyError.back() << (r.converged ? "" : " (tolerance not met)")

@@ -1,12 +1,14 @@
 // dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 #include "GreedySelector.hpp"
 #include "IncrementalGreedyModel.hpp"
+#include "CandidateRows.hpp"
 #include "PointSetChecks.hpp"
 
 #include <Eigen/QR>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -15,8 +17,8 @@ namespace dcprbf
 
 namespace
 {
-//- Index of the largest value among the unselected candidates with
-//  allowed(i), ties to the lowest index; -1 if none
+//- Local index of the largest value among this rank's unselected candidates
+//  with allowed(i), ties to the lowest index; -1 if none
 template<class Allowed>
 Eigen::Index argmax
 (
@@ -31,6 +33,69 @@ Eigen::Index argmax
         if (!selected[i] && allowed(i) && (best < 0 || v(i) > v(best))) best = i;
     }
     return best;
+}
+
+//- The global best of v over the ranks' unselected candidates with
+//  allowed(i) (a global index, -1 if none; CandidateRows::argmax)
+template<class Allowed>
+CandidateRows::Best globalArgmax
+(
+    const CandidateRows& rows,
+    const Eigen::VectorXd& v,
+    const std::vector<char>& selected,
+    Allowed allowed
+)
+{
+    const Eigen::Index i = argmax(v, selected, allowed);
+    return rows.argmax(i >= 0 ? v(i) : 0.0, i);
+}
+
+bool all(Eigen::Index) { return true; }
+
+//- |v_i|^2 per row, each row on its own (the same value whatever block of
+//  rows a rank holds)
+Eigen::VectorXd squaredNorms(const Values& v)
+{
+    Eigen::VectorXd n(v.rows());
+    for (Eigen::Index i = 0; i < v.rows(); ++i)
+    {
+        n(i) = v(i, 0)*v(i, 0) + v(i, 1)*v(i, 1) + v(i, 2)*v(i, 2);
+    }
+    return n;
+}
+
+//- The frame of all ranks' candidates' bounding box (the same frame as
+//  LinearPolynomial::boundingBox of the whole set)
+LinearPolynomial boxFrame(bool polynomial, int dim, const CandidateRows& rows)
+{
+    const double inf = std::numeric_limits<double>::infinity();
+    const Points& x = rows.points();
+    // the maxima of x and of -x
+    double box[6] = {-inf, -inf, -inf, -inf, -inf, -inf};
+    for (Eigen::Index i = 0; i < x.rows(); ++i)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            box[k] = std::max(box[k], x(i, k));
+            box[3 + k] = std::max(box[3 + k], -x(i, k));
+        }
+    }
+    rows.comm().max(box, 6);
+    if (!(box[0] > -inf))
+    {
+        return LinearPolynomial(polynomial, dim);
+    }
+    Points corners(2, 3);
+    corners << -box[3], -box[4], -box[5], box[0], box[1], box[2];
+    return LinearPolynomial::boundingBox(polynomial, dim, corners);
+}
+
+//- Global candidate i's coordinates, on every rank
+Eigen::RowVector3d coordinates(const CandidateRows& rows, Eigen::Index i)
+{
+    double out[6];
+    rows.fetch(i, nullptr, 0, out);
+    return Eigen::RowVector3d(out[0], out[1], out[2]);
 }
 }
 
@@ -80,39 +145,45 @@ GreedySelector::GreedySelector
 }
 
 
-void GreedySelector::checkInput
-(
-    const Points& x,
-    const Values& d
-) const
+void GreedySelector::checkInput(const CandidateRows& rows) const
 {
-    if (d.rows() != x.rows())
-    {
-        throw Error
-        (
-            "greedy selection: " + std::to_string(d.rows()) + " displacements"
-            " for " + std::to_string(x.rows()) + " candidate points"
-        );
-    }
     const Eigen::Index need = std::max<Eigen::Index>
     (
         {options_.minPoints, Eigen::Index(options_.seed.size()),
          PointSetChecks::minimumSize(LinearPolynomial(polynomial_, dim_))}
     );
-    if (x.rows() < need)
+    if (rows.total() < need)
     {
         throw Error
         (
-            "greedy selection: " + std::to_string(x.rows()) + " candidate"
+            "greedy selection: " + std::to_string(rows.total()) + " candidate"
             " points are too few, " + std::to_string(need) + " are needed"
         );
     }
-    PointSetChecks::checkCoordinates(x, dim_, "candidate point");
-    if (!d.allFinite())
+    // each rank its own block; the ranks agree before throwing (none is
+    // left waiting in a collective call)
+    std::string error;
+    try
     {
-        throw Error("greedy selection: displacements are not finite");
+        PointSetChecks::checkCoordinates(rows.points(), dim_, "candidate point");
+        if (!rows.values().allFinite())
+        {
+            throw Error("greedy selection: displacements are not finite");
+        }
+        PointSetChecks::checkDistinct(rows.points(), "candidate point");
     }
-    PointSetChecks::checkDistinct(x, "candidate point");
+    catch (const Error& e)
+    {
+        error = e.what();
+    }
+    if (rows.comm().any(!error.empty()))
+    {
+        throw Error
+        (
+            error.empty()
+          ? "greedy selection: another rank's candidates are ill-posed" : error
+        );
+    }
 }
 
 
@@ -122,40 +193,54 @@ std::vector<Eigen::Index> GreedySelector::seed
     const Values& d
 ) const
 {
-    // the candidates' bounding-box frame: a check in raw coordinates fails for
-    // sets far from the origin (terrain in UTM coordinates)
-    const LinearPolynomial poly(LinearPolynomial::boundingBox(polynomial_, dim_, x));
+    return seed(CandidateRows(x, d));
+}
+
+
+std::vector<Eigen::Index> GreedySelector::seed(const CandidateRows& rows) const
+{
+    const Points& x = rows.points();
     std::vector<Eigen::Index> s = options_.seed;
+    std::vector<Eigen::RowVector3d> hull;
     if (s.empty())
     {
         const std::vector<char> none(x.rows(), 0);
-        s.push_back(argmax(d.rowwise().squaredNorm(), none, [](Eigen::Index)
-        {
-            return true;
-        }));
+        s.push_back(globalArgmax(rows, squaredNorms(rows.values()), none, all).index);
+        hull.push_back(coordinates(rows, s.back()));
         if (polynomial_)
         {
             // farthest point from the seed's affine hull, dim times
+            std::vector<char> taken(x.rows(), 0);
             for (int k = 0; k < dim_; ++k)
             {
-                Points hull(s.size(), 3);
-                for (std::size_t j = 0; j < s.size(); ++j) hull.row(j) = x.row(s[j]);
+                const Eigen::Index l = rows.local(s.back());
+                if (l >= 0) taken[l] = 1;
                 // distance to the hull: remove the components along an
-                // orthonormal basis of the hull's edge vectors
-                const Eigen::RowVector3d o = hull.row(0);
-                Eigen::MatrixXd rel = (x.rowwise() - o).transpose();
-                if (hull.rows() > 1)
+                // orthonormal basis of the hull's edge vectors, point by point
+                const Eigen::RowVector3d o = hull[0];
+                Eigen::MatrixXd Qb(3, 0);
+                if (hull.size() > 1)
                 {
-                    const Eigen::MatrixXd B =
-                        (hull.bottomRows(hull.rows() - 1).rowwise() - o).transpose();
-                    const Eigen::MatrixXd Qb = B.householderQr().householderQ()
+                    Eigen::MatrixXd B(3, hull.size() - 1);
+                    for (std::size_t j = 1; j < hull.size(); ++j)
+                    {
+                        B.col(j - 1) = (hull[j] - o).transpose();
+                    }
+                    Qb = B.householderQr().householderQ()
                         *Eigen::MatrixXd::Identity(3, B.cols());
-                    rel -= Qb*(Qb.transpose()*rel);
                 }
-                std::vector<char> taken(x.rows(), 0);
-                for (const Eigen::Index i : s) taken[i] = 1;
-                s.push_back(argmax(rel.colwise().squaredNorm().transpose(), taken,
-                    [](Eigen::Index) { return true; }));
+                Eigen::VectorXd dist2(x.rows());
+                for (Eigen::Index i = 0; i < x.rows(); ++i)
+                {
+                    Eigen::Vector3d r = (x.row(i) - o).transpose();
+                    for (Eigen::Index j = 0; j < Qb.cols(); ++j)
+                    {
+                        r -= Qb.col(j)*Qb.col(j).dot(r);
+                    }
+                    dist2(i) = r(0)*r(0) + r(1)*r(1) + r(2)*r(2);
+                }
+                s.push_back(globalArgmax(rows, dist2, taken, all).index);
+                hull.push_back(coordinates(rows, s.back()));
             }
         }
     }
@@ -163,16 +248,22 @@ std::vector<Eigen::Index> GreedySelector::seed
     if
     (
         distinct.size() != s.size() || *distinct.begin() < 0
-     || *distinct.rbegin() >= x.rows()
+     || *distinct.rbegin() >= rows.total()
     )
     {
         throw Error("greedy seed indices must be distinct candidate indices");
     }
-    Points hull(s.size(), 3);
-    for (std::size_t j = 0; j < s.size(); ++j) hull.row(j) = x.row(s[j]);
+    if (hull.empty())
+    {
+        for (const Eigen::Index i : s) hull.push_back(coordinates(rows, i));
+    }
+    Points h(s.size(), 3);
+    for (std::size_t j = 0; j < s.size(); ++j) h.row(j) = hull[j];
     try
     {
-        poly.checkUnisolvent(hull);
+        // in the candidates' bounding-box frame: a check in raw coordinates
+        // fails for sets far from the origin (terrain in UTM coordinates)
+        boxFrame(polynomial_, dim_, rows).checkUnisolvent(h);
     }
     catch (const Error& e)
     {
@@ -184,19 +275,20 @@ std::vector<Eigen::Index> GreedySelector::seed
 
 GreedyResult GreedySelector::select(const Points& x, const Values& d) const
 {
-    return run
-    (
-        [](const RadialKernel& kernel, const LinearPolynomial& frame,
-           const Points& candidates, const Values& displacements)
-        {
-            return std::unique_ptr<GreedyModel>
-            (
-                new IncrementalGreedyModel(kernel, frame, candidates, displacements)
-            );
-        },
-        x,
-        d
-    );
+    return select(CandidateRows(x, d));
+}
+
+
+GreedyResult GreedySelector::select(const CandidateRows& rows) const
+{
+    checkInput(rows);
+    const LinearPolynomial frame = boxFrame(polynomial_, dim_, rows);
+    GreedyResult result(frame);
+    IncrementalGreedyModel model(kernel_, frame, rows);
+    iterate(model, seed(rows), rows, result);
+    result.factorization = model.releaseFactorization();
+    result.centres = result.factorization->centres();
+    return result;
 }
 
 
@@ -207,12 +299,14 @@ GreedyResult GreedySelector::run
     const Values& d
 ) const
 {
-    checkInput(x, d);
+    const CandidateRows rows(x, d);
+    checkInput(rows);
     const LinearPolynomial frame = LinearPolynomial::boundingBox(polynomial_, dim_, x);
     GreedyResult result(frame);
     const std::unique_ptr<GreedyModel> model = makeModel(kernel_, frame, x, d);
-    iterate(*model, seed(x, d), d, result);
+    iterate(*model, seed(rows), rows, result);
     result.factorization = model->releaseFactorization();
+    result.centres.resize(result.selected.size(), 3);
     for (std::size_t j = 0; j < result.selected.size(); ++j)
     {
         result.centres.row(j) = x.row(result.selected[j]);
@@ -225,15 +319,15 @@ void GreedySelector::iterate
 (
     GreedyModel& model,
     const std::vector<Eigen::Index>& seed,
-    const Values& d,
+    const CandidateRows& rows,
     GreedyResult& result
 ) const
 {
-    const Eigen::Index nb = d.rows();
     const Eigen::Index minPoints = std::max<Eigen::Index>(options_.minPoints, seed.size());
-    const double scale = std::sqrt(d.rowwise().squaredNorm().maxCoeff());
+    const Eigen::VectorXd d2 = squaredNorms(rows.values());
+    const double scale = std::sqrt(rows.comm().max(d2.size() ? d2.maxCoeff() : 0.0));
     result.maxDisplacement = scale;
-    std::vector<char> selected(nb, 0);
+    std::vector<char> selected(rows.size(), 0);
     std::vector<Eigen::Index> next = seed;
     for (bool seeding = true; ; seeding = false)
     {
@@ -268,39 +362,46 @@ void GreedySelector::iterate
         }
         for (const Eigen::Index i : added)
         {
-            selected[i] = 1;
+            const Eigen::Index l = rows.local(i);
+            if (l >= 0) selected[l] = 1;
             result.selected.push_back(i);
         }
         const Eigen::Index n = result.selected.size();
         const Values& e = model.residual();
-        const Eigen::VectorXd err2 = e.rowwise().squaredNorm();
-        const Eigen::Index worst = argmax(err2, selected, [](Eigen::Index) { return true; });
+        const Eigen::VectorXd err2 = squaredNorms(e);
+        const CandidateRows::Best worst = globalArgmax(rows, err2, selected, all);
         const double eps =
-            worst < 0 || scale == 0 ? 0.0 : std::sqrt(err2(worst))/scale;
+            worst.index < 0 || scale == 0 ? 0.0 : std::sqrt(worst.value)/scale;
         result.historySize.push_back(n);
         result.historyError.push_back(eps);
         result.converged = eps <= options_.tolerance;
         if
         (
             (result.converged && n >= minPoints) || n >= options_.maxPoints
-         || worst < 0 || result.dependent
+         || worst.index < 0 || result.dependent
         )
         {
             break;
         }
-        next.assign(1, worst);
+        next.assign(1, worst.index);
         if (options_.doubleEdged && n + 2 <= options_.maxPoints)
         {
-            const Eigen::RowVector3d ew = e.row(worst);
-            const Eigen::Index other = argmax(err2, selected, [&](Eigen::Index i)
-            {
-                return i != worst && e.row(i).dot(ew) < 0;
-            });
-            if (other >= 0) next.push_back(other);
+            // the worst point's error, from the rank holding it
+            const Eigen::Index lw = rows.local(worst.index);
+            const Eigen::RowVector3d own =
+                lw >= 0 ? Eigen::RowVector3d(e.row(lw)) : Eigen::RowVector3d::Zero();
+            double fetched[9];
+            rows.fetch(worst.index, own.data(), 3, fetched);
+            const Eigen::RowVector3d ew(fetched[6], fetched[7], fetched[8]);
+            const CandidateRows::Best other = globalArgmax(rows, err2, selected,
+                [&](Eigen::Index i)
+                {
+                    return i != lw && e.row(i).dot(ew) < 0;
+                });
+            if (other.index >= 0) next.push_back(other.index);
         }
     }
     model.coefficients(result.alpha, result.beta);
-    result.centres.resize(result.selected.size(), 3);
 }
 
 } // namespace dcprbf

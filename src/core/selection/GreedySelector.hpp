@@ -24,6 +24,7 @@
 // (LinearPolynomial::boundingBox), beta is written in it.
 #pragma once
 
+#include "CandidateRows.hpp"
 #include "GreedyModel.hpp"
 #include "LinearPolynomial.hpp"
 #include "RadialKernel.hpp"
@@ -125,6 +126,13 @@ public:
     //  the polynomial, a candidate numerically dependent on the selected ones)
     GreedyResult select(const Points& candidates, const Values& displacements) const;
 
+    //- The same selection on candidates divided over ranks (collective):
+    //  each rank holds its block of the rows (the Nb/P x N basis); indices
+    //  (selected, options' seed) are global, the result is the same on every
+    //  rank and the same as select() on all the rows in one block, whatever
+    //  the division. An Error is thrown on every rank alike.
+    GreedyResult select(const CandidateRows& candidates) const;
+
     //- The selection on the model made by makeModel (select() is run() on an
     //  IncrementalGreedyModel): the same input checks, seed and loop
     GreedyResult run
@@ -145,17 +153,20 @@ public:
         const Values& displacements
     ) const;
 
+    //- The automatic seed of candidates divided over ranks (global indices)
+    std::vector<Eigen::Index> seed(const CandidateRows& candidates) const;
+
     const GreedyOptions& options() const { return options_; }
 
 private:
-    void checkInput(const Points& candidates, const Values& displacements) const;
+    void checkInput(const CandidateRows& candidates) const;
 
     //- The loop
     void iterate
     (
         GreedyModel& model,
         const std::vector<Eigen::Index>& seed,
-        const Values& displacements,
+        const CandidateRows& candidates,
         GreedyResult& result
     ) const;
 

@@ -20,13 +20,23 @@ IncrementalGreedyModel::IncrementalGreedyModel
     const Values& displacements
 )
 :
-    x_(candidates),
-    d_(displacements),
+    IncrementalGreedyModel(kernel, polynomial, CandidateRows(candidates, displacements))
+{}
+
+
+IncrementalGreedyModel::IncrementalGreedyModel
+(
+    const RadialKernel& kernel,
+    const LinearPolynomial& polynomial,
+    const CandidateRows& rows
+)
+:
+    rows_(rows),
     f_(new SaddleFactorization(kernel, polynomial)),
-    a_(Eigen::MatrixX3d::Zero(candidates.rows(), 3)),
-    Q_(polynomial.basis(candidates)),
+    a_(Eigen::MatrixX3d::Zero(rows.size(), 3)),
+    Q_(polynomial.basis(rows.points())),
     WTy_(Eigen::MatrixX3d::Zero(polynomial.size(), 3)),
-    residual_(displacements)
+    residual_(rows.values())
 {}
 
 
@@ -34,8 +44,9 @@ void IncrementalGreedyModel::reserve(Eigen::Index n)
 {
     if (n <= V_.cols()) return;
     const Eigen::Index cap = std::max<Eigen::Index>({n, 2*V_.cols(), 64});
-    V_.conservativeResize(x_.rows(), cap);
+    V_.conservativeResize(rows_.size(), cap);
     y_.conservativeResize(cap, 3);
+    dSelected_.conservativeResize(cap, 3);
 }
 
 
@@ -49,34 +60,49 @@ void IncrementalGreedyModel::add(const std::vector<Eigen::Index>& indices)
 void IncrementalGreedyModel::append(Eigen::Index c)
 {
     const Eigen::Index n = f_->size();
-    const Eigen::Index nb = x_.rows();
-    const double* xc = x_.row(c).data();
+    const Eigen::Index nb = rows_.size();
     reserve(n + 1);
 
-    // l = v(c): the candidate's row of the Newton basis
-    const Eigen::VectorXd l = V_.row(c).head(n).transpose();
+    // The candidate's coordinates, displacement and l = v(c), its row of the
+    // Newton basis, from the rank holding it
+    const Eigen::Index lc = rows_.local(c);
+    const Eigen::VectorXd own =
+        lc >= 0 ? Eigen::VectorXd(V_.row(lc).head(n).transpose()) : Eigen::VectorXd();
+    Eigen::VectorXd fetched(6 + n);
+    rows_.fetch(c, own.data(), n, fetched.data());
+    Points xc(1, 3);
+    xc << fetched(0), fetched(1), fetched(2);
+    const Eigen::RowVector3d dc(fetched(3), fetched(4), fetched(5));
+    const Eigen::VectorXd l = fetched.tail(n);
+
     Eigen::VectorXd k(nb);
-    f_->kernel().column(x_, xc, k.data());
-    const double pivotSq = k(c) - l.squaredNorm();
-    if (!f_->acceptablePivot(xc, pivotSq))
+    f_->kernel().column(rows_.points(), xc.data(), k.data());
+    double kcc = 0;
+    f_->kernel().column(xc, xc.data(), &kcc);
+    const double pivotSq = kcc - l.squaredNorm();
+    dSelected_.row(n) = dc;
+    if (!f_->acceptablePivot(xc.data(), pivotSq))
     {
         if (f_->kernel().kernel().positiveDefinite())
         {
             std::ostringstream os;
-            os  << "candidate point " << c << " at (" << x_.row(c) << ") is"
+            os  << "candidate point " << c << " at (" << xc << ") is"
                 << " numerically dependent on the " << n << " selected points"
                 << " (kernel matrix singular to round-off)";
             throw Error(os.str());
         }
         selected_.push_back(c);
-        raiseShiftAndRebuild();
+        Points centres(n + 1, 3);
+        centres.topRows(n) = f_->centres();
+        centres.row(n) = xc;
+        raiseShiftAndRebuild(centres);
         return;
     }
     const double pivot = std::sqrt(pivotSq);
-    f_->append(xc, l, pivot);
+    f_->append(xc.data(), l, pivot);
     selected_.push_back(c);
 
-    const Eigen::RowVector3d yNew = (d_.row(c) - l.transpose()*y_.topRows(n))/pivot;
+    const Eigen::RowVector3d yNew = (dc - l.transpose()*y_.topRows(n))/pivot;
     y_.row(n) = yNew;
     const int m = f_->polynomial().size();
     const Eigen::RowVectorXd wNew = f_->W().row(n);
@@ -101,7 +127,7 @@ void IncrementalGreedyModel::append(Eigen::Index c)
         a_.middleRows(b, e - b).noalias() += v*yNew;
         if (m > 0) Q_.middleRows(b, e - b).noalias() -= v*wNew;
     }
-    V_(c, n) = pivot;
+    if (lc >= 0) V_(lc, n) = pivot;
 }
 
 
@@ -111,7 +137,7 @@ void IncrementalGreedyModel::updateResidual()
     {
         throw Error("greedy seed too small to carry the polynomial");
     }
-    residual_ = d_ - a_;
+    residual_ = rows_.values() - a_;
     if (f_->polynomial().enabled())
     {
         residual_ -= Q_*f_->schurSolve(WTy_);
@@ -125,13 +151,13 @@ void IncrementalGreedyModel::rebuild()
     reserve(n);
     // V = K_c(X, C) L^{-T}
     auto V = V_.leftCols(n);
-    V = f_->kernel().matrix(x_, f_->centres());
+    V = f_->kernel().matrix(rows_.points(), f_->centres());
     f_->factor().solveRightUpperInPlace(V);
     auto y = y_.topRows(n);
-    for (Eigen::Index j = 0; j < n; ++j) y.row(j) = d_.row(selected_[j]);
+    y = dSelected_.topRows(n);
     f_->factor().solveLowerInPlace(y);
     a_.noalias() = V*y;
-    Q_ = f_->polynomial().basis(x_);
+    Q_ = f_->polynomial().basis(rows_.points());
     if (f_->polynomial().enabled())
     {
         Q_.noalias() -= V*f_->W();
@@ -143,9 +169,13 @@ void IncrementalGreedyModel::rebuild()
 
 void IncrementalGreedyModel::raiseShiftAndRebuild()
 {
-    Points c(selected_.size(), 3);
-    for (std::size_t j = 0; j < selected_.size(); ++j) c.row(j) = x_.row(selected_[j]);
-    f_->raiseShiftAndFactorize(c);
+    raiseShiftAndRebuild(f_->centres());
+}
+
+
+void IncrementalGreedyModel::raiseShiftAndRebuild(const Points& centres)
+{
+    f_->raiseShiftAndFactorize(centres);
     rebuild();
 }
 
@@ -156,8 +186,7 @@ void IncrementalGreedyModel::coefficients
     Eigen::MatrixX3d& beta
 ) const
 {
-    Values dc(selected_.size(), 3);
-    for (std::size_t j = 0; j < selected_.size(); ++j) dc.row(j) = d_.row(selected_[j]);
+    const Values dc = dSelected_.topRows(f_->size());
     f_->solve(dc, alpha, beta);
 }
 

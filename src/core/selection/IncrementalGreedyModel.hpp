@@ -20,8 +20,16 @@
 // kernels (the candidate is numerically dependent on the selected ones); for
 // TPS it raises the shift c tenfold and rebuilds V, y, a, Q from the
 // refactorized set (O(N^2 Nb), rare), since s(x) does not depend on c.
+//
+// Divided over ranks (CandidateRows): each rank holds the rows of V, a, Q
+// and the residual of its own candidates only (Nb/P x N); the appended
+// candidate's coordinates, displacement and row l come from the rank that
+// holds it (one broadcast of N + 6 values), after which every rank updates
+// the replicated O(N^2) part (L, W, y) with the same values in the same
+// order: the same factorization everywhere, bit for bit.
 #pragma once
 
+#include "CandidateRows.hpp"
 #include "GreedyModel.hpp"
 #include "SaddleFactorization.hpp"
 
@@ -40,6 +48,15 @@ public:
         const LinearPolynomial& polynomial,
         const Points& candidates,
         const Values& displacements
+    );
+
+    //- This rank's block of the candidates (and the references it keeps);
+    //  add() takes global indices, residual() is this rank's rows
+    IncrementalGreedyModel
+    (
+        const RadialKernel& kernel,
+        const LinearPolynomial& polynomial,
+        const CandidateRows& rows
     );
 
     void add(const std::vector<Eigen::Index>& indices) override;
@@ -63,16 +80,17 @@ public:
 
 private:
     void append(Eigen::Index c);
+    void raiseShiftAndRebuild(const Points& centres);
     void updateResidual();
     void reserve(Eigen::Index n);
 
-    const Points& x_;
-    const Values& d_;
+    CandidateRows rows_;
     std::unique_ptr<SaddleFactorization> f_;
     std::vector<Eigen::Index> selected_;
 
     Eigen::MatrixXd V_;         // Nb x capacity, Newton basis at candidates
     Eigen::MatrixX3d y_;        // capacity x 3, Newton coefficients of d
+    Eigen::MatrixX3d dSelected_; // capacity x 3, d at the selected points
     Eigen::MatrixX3d a_;        // Nb x 3,  V y
     Eigen::MatrixXd Q_;         // Nb x m,  q(x)^T - V W
     Eigen::MatrixX3d WTy_;      // m x 3

@@ -9,6 +9,7 @@
 #include "SpatialSearch.hpp"
 #include "Quality.hpp"
 #include "RigidMotion.hpp"
+#include "Parallel.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,6 +27,7 @@ TEST(ModuleHeaders, DeclareThePublicClasses)
     EXPECT_TRUE(std::is_class<PointTree>::value);
     EXPECT_TRUE(std::is_class<CellQualityScan>::value);
     EXPECT_TRUE(std::is_class<RigidMotion>::value);
+    EXPECT_TRUE(std::is_class<CandidateRows>::value);
     const unsigned bits = SimdWidth::bits();
     EXPECT_TRUE(bits == 0 || bits == 256 || bits == 512) << bits;
 }
