@@ -9,12 +9,21 @@ License
 #include "dcpRBFControlPoints.H"
 #include "GreedySelector.hpp"
 #include "dcpRBFPstreamCollective.H"
+#include "dcpRBFResidentMemory.H"
 #include "Time.H"
 #include "dcpRBFVersion.H"
 
 #include <algorithm>
 #include <iterator>
 #include <numeric>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(dcpRBFControlPoints, 0);
+}
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -73,7 +82,18 @@ void Foam::dcpRBFControlPoints::greedy(const dcprbf::Values& d)
     const dcprbf::Points x(boundary_.points().middleRows(begin, end - begin));
     const dcprbf::Values t(target.middleRows(begin, end - begin));
     const dcpRBFPstreamCollective comm;
+    const dcpRBFResidentMemory memory;
     dcprbf::GreedyResult r(g.select(dcprbf::CandidateRows(comm, x, t)));
+    if (debug)
+    {
+        scalar most = memory.peakAboveStartMB();
+        scalar least = most;
+        reduce(most, maxOp<scalar>());
+        reduce(least, minOp<scalar>());
+        Info<< "dcpRBF: greedy selection over " << Pstream::nProcs()
+            << " processor(s), peak resident memory above its start [MB]:"
+            << " largest " << most << ", smallest " << least << endl;
+    }
     Info<< "dcpRBF: greedy selection of " << r.selected.size() << " of "
         << boundary_.size() << " boundary points, relative error "
         << r.historyError.back() << (r.converged ? "" : " (tolerance not met)")
