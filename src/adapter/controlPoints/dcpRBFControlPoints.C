@@ -76,14 +76,11 @@ void Foam::dcpRBFControlPoints::greedy(const dcprbf::Values& d)
     // In parallel the selection's candidates (and its Nb x N basis) are
     // divided over the processors, in blocks of the global set's canonical
     // order: the same result as in serial, on every processor
-    const label nb = boundary_.size();
-    const label begin = nb*Pstream::myProcNo()/Pstream::nProcs();
-    const label end = nb*(Pstream::myProcNo() + 1)/Pstream::nProcs();
-    const dcprbf::Points x(boundary_.points().middleRows(begin, end - begin));
-    const dcprbf::Values t(target.middleRows(begin, end - begin));
+    const label n = block_.end() - block_.begin();
+    const dcprbf::Values t(target.middleRows(block_.begin(), n));
     const dcpRBFPstreamCollective comm;
     const dcpRBFResidentMemory memory;
-    dcprbf::GreedyResult r(g.select(dcprbf::CandidateRows(comm, x, t)));
+    dcprbf::GreedyResult r(g.select(dcprbf::CandidateRows(comm, block_.points(), t)));
     if (debug)
     {
         scalar most = memory.peakAboveStartMB();
@@ -157,20 +154,8 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints
         "dcpRBFState", mesh,
         [this](dictionary& state) { storeState(state); }
     ),
-    boundaryStored_
-    (
-        settings.kernel(), set_.evaluator().polynomial(), boundary.points()
-    )
+    block_(boundary, settings.kernel(), set_.evaluator().polynomial())
 {
-    forAll(boundary_.moving(), i)
-    {
-        if (boundary_.moving()[i]) movingIndex_.push_back(i);
-    }
-    movingPoints_.resize(Eigen::Index(movingIndex_.size()), 3);
-    for (std::size_t k = 0; k < movingIndex_.size(); ++k)
-    {
-        movingPoints_.row(k) = boundary_.points().row(movingIndex_[k]);
-    }
     try
     {
         ready_ = readState();
@@ -247,51 +232,16 @@ Foam::scalar Foam::dcpRBFControlPoints::boundaryError
     label& worst
 ) const
 {
-    // stored: at every candidate, one product; else the moving ones alone
-    const dcprbf::RbfEvaluator& ev = set_.evaluator();
-    const bool all = storedBoundary();
-    dcprbf::Values s;
-    if (all)
-    {
-        boundaryStored_.evaluate(ev.weights(), ev.polynomialCoeffs(), s);
-    }
-    else
-    {
-        s = ev.evaluate(movingPoints_);
-    }
-    scalar err = 0;
-    worst = -1;
-    for (std::size_t k = 0; k < movingIndex_.size(); ++k)
-    {
-        const Eigen::Index i = movingIndex_[k];
-        const scalar e = (s.row(all ? i : Eigen::Index(k)) - d.row(i)).norm();
-        if (e > err)
-        {
-            err = e;
-            worst = label(i);
-        }
-    }
+    const scalar err =
+        block_.largestMovingError(set_.evaluator(), d, storageBudget()/16, worst);
     const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
     return dMax > 0 ? err/dMax : 0;
 }
 
 
-bool Foam::dcpRBFControlPoints::storedBoundary() const
-{
-    return boundaryStored_.prepare(set_.evaluator().centres(), storageBudget()/16);
-}
-
-
 dcprbf::Values Foam::dcpRBFControlPoints::boundaryValues() const
 {
-    const dcprbf::RbfEvaluator& s = set_.evaluator();
-    if (!storedBoundary())
-    {
-        return s.evaluate(boundary_.points());
-    }
-    dcprbf::Values v;
-    boundaryStored_.evaluate(s.weights(), s.polynomialCoeffs(), v);
-    return v;
+    return block_.gathered(set_.evaluator(), storageBudget()/16);
 }
 
 
