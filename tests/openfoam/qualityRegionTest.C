@@ -125,6 +125,18 @@ void compareScans(const label dim, const scalar radius)
         EXPECT_EQ(s.minQuality, min(q));
         EXPECT_EQ(s.nInverted, nInverted);
         EXPECT_EQ(s.worst[0][0], min(q));
+        ASSERT_EQ(s.best.size(), 2);
+        EXPECT_EQ(s.best[0][0], max(q));
+
+        // without the best cells (no swap rule reads them): the same
+        // figures and worst cells, no best ones
+        const dcpRBFQualityRegion::summary w(region.measure(p, 2, scalarField(), -1, false));
+        EXPECT_EQ(w.minQuality, s.minQuality);
+        EXPECT_EQ(w.meanQuality, s.meanQuality);
+        EXPECT_EQ(w.checkedMean, s.checkedMean);
+        EXPECT_EQ(w.nInverted, s.nInverted);
+        EXPECT_EQ(w.worst, s.worst);
+        EXPECT_EQ(w.best.size(), 0);
     }
 }
 

@@ -28,6 +28,7 @@ Foam::dcpRBFQualityMeasurement::dcpRBFQualityMeasurement
     points0_(points0),
     nRanked_(max(label(1), nSwap)),
     nLowest_(-1),
+    rankBest_(true),
     measured_(false),
     measuredInStep_(false),
     checkTime_(0),
@@ -41,7 +42,7 @@ void Foam::dcpRBFQualityMeasurement::measureRegion(const pointField& p)
 {
     // the qualities into the last measurement's storage
     const label lowest = mesh_.time().writeTime() ? -1 : nLowest_;
-    last_ = region_.measure(p, nRanked_, std::move(last_.quality), lowest);
+    last_ = region_.measure(p, nRanked_, std::move(last_.quality), lowest, rankBest_);
 }
 
 

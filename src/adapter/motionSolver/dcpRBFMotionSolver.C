@@ -124,6 +124,7 @@ void Foam::dcpRBFMotionSolver::construct()
     {
         quality_->measureLowest(swapRule_->lowestCells(region_->nChecked()));
     }
+    quality_->rankBest(swapRule_->readsBestCells());
 
     setThreads();
     prescribed_->checkPatches(coeffDict());

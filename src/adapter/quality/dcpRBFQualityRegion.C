@@ -201,7 +201,8 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     const pointField& p,
     const label n,
     scalarField&& reuse,
-    const label nLowest
+    const label nLowest,
+    const bool rankBest
 ) const
 {
     scalarField q(std::move(reuse));
@@ -230,12 +231,13 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
     };
     const auto higher = [&](const label a, const label b) { return lower(b, a); };
     const label nLocal = min(n, q.size());
-    const auto keep = [nLocal](std::vector<label>& kept, const label i, const auto& before)
+    const label nBest = rankBest ? nLocal : 0;
+    const auto keep = [](std::vector<label>& kept, const label k, const label i, const auto& before)
     {
-        if (label(kept.size()) < nLocal || before(i, kept.back()))
+        if (label(kept.size()) < k || before(i, kept.back()))
         {
             kept.insert(std::upper_bound(kept.begin(), kept.end(), i, before), i);
-            if (label(kept.size()) > nLocal) kept.pop_back();
+            if (label(kept.size()) > k) kept.pop_back();
         }
     };
     struct block
@@ -255,12 +257,13 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
         const label i1 = min(q.size(), (bi + 1)*blockSize);
         // keep() only for a cell that may enter a full list: at most its
         // last quality (lowest), at least (highest); NaN always
-        const auto bound = [&](const std::vector<label>& kept, const scalar none)
+        const auto bound = [&](const std::vector<label>& kept, const label k, const scalar none)
         {
-            return nLocal == 0 || label(kept.size()) < nLocal ? none : q[kept.back()];
+            return k == 0 || label(kept.size()) < k ? none : q[kept.back()];
         };
         constexpr scalar inf = std::numeric_limits<scalar>::infinity();
-        scalar low = bound(b.lowestAt, inf), high = bound(b.highestAt, -inf);
+        scalar low = bound(b.lowestAt, nLocal, inf);
+        scalar high = bound(b.highestAt, nBest, -inf);
         // the sum and the least in four interleaved chains (one chain is
         // bound by the additions' latency), in a fixed order: the same on
         // any thread count
@@ -276,13 +279,13 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
                 sum[u] += qi;
                 if (nLocal > 0 && !(qi > low))
                 {
-                    keep(b.lowestAt, i + u, lower);
-                    low = bound(b.lowestAt, inf);
+                    keep(b.lowestAt, nLocal, i + u, lower);
+                    low = bound(b.lowestAt, nLocal, inf);
                 }
-                if (nLocal > 0 && !(qi < high))
+                if (nBest > 0 && !(qi < high))
                 {
-                    keep(b.highestAt, i + u, higher);
-                    high = bound(b.highestAt, -inf);
+                    keep(b.highestAt, nBest, i + u, higher);
+                    high = bound(b.highestAt, nBest, -inf);
                 }
             }
         }
@@ -310,8 +313,8 @@ Foam::dcpRBFQualityRegion::summary Foam::dcpRBFQualityRegion::measure
         {
             leastAt = b.leastAt;
         }
-        for (const label i : b.lowestAt) keep(lowestAt, i, lower);
-        for (const label i : b.highestAt) keep(highestAt, i, higher);
+        for (const label i : b.lowestAt) keep(lowestAt, nLocal, i, lower);
+        for (const label i : b.highestAt) keep(highestAt, nBest, i, higher);
     }
 
     summary s;

@@ -53,6 +53,13 @@ Foam::label Foam::dcpRBFNearestSwaps::lowestCells(const label nCells) const
 }
 
 
+bool Foam::dcpRBFNearestSwaps::readsBestCells() const
+{
+    return
+        settings_.selection().selection == dcpRBFSelectionSettings::mode::dynamic;
+}
+
+
 void Foam::dcpRBFNearestSwaps::beforeSolve(dcpRBFStepState& step)
 {
     if (controlPoints_.ready() && controlPoints_.swapsBeforeSolve())
