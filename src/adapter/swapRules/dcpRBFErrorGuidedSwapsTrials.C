@@ -65,10 +65,17 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     {
         quality_.currentPoints(current);
     }
-    dcpRBFRankedCell worst
-    (
-        measured ? quality_.last().worst[0] : window.worst(current)
-    );
+    // (assigned, not copy-constructed from a conditional: GCC 12 with
+    // v2506's FixedList reports the copy's elements maybe-uninitialized)
+    dcpRBFRankedCell worst;
+    if (measured)
+    {
+        worst = quality_.last().worst[0];
+    }
+    else
+    {
+        worst = window.worst(current);
+    }
     // unmeasured: the window's minimum without swaps, at least the mesh's;
     // an inverted cell there: the mesh is measured and rescued instead
     // (afterInterpolate())

@@ -184,7 +184,7 @@ void CellQualityScan::classify(std::vector<std::size_t>& cellStart)
     for (std::size_t i = 0; i < nCells; ++i)
     {
         const std::size_t k0 = cellStart[i], nFaces = cellStart[i + 1] - k0;
-        int v[6];
+        int v[8];
         if (tetrahedronVertices(&faceStart_[k0], nFaces, facePoints_.data(), v))
         {
             kind_[i] = tetrahedron;
@@ -196,6 +196,12 @@ void CellQualityScan::classify(std::vector<std::size_t>& cellStart)
             kind_[i] = prism;
             slot_[i] = int(vertices_.size());
             vertices_.insert(vertices_.end(), v, v + 6);
+        }
+        else if (hexahedronVertices(&faceStart_[k0], nFaces, facePoints_.data(), v))
+        {
+            kind_[i] = hexahedron;
+            slot_[i] = int(vertices_.size());
+            vertices_.insert(vertices_.end(), v, v + 8);
         }
         else
         {
@@ -212,6 +218,18 @@ void CellQualityScan::classify(std::vector<std::size_t>& cellStart)
     faceStart_.swap(entryStart);
     facePoints_.swap(entryPoints);
     vertices_.shrink_to_fit();
+}
+
+
+CellQualityScan::Shapes CellQualityScan::shapes() const
+{
+    Shapes s;
+    for (const Kind k : kind_)
+    {
+        ++(k == tetrahedron ? s.tetrahedra : k == prism ? s.prisms
+         : k == hexahedron ? s.hexahedra : s.others);
+    }
+    return s;
 }
 
 } // namespace dcprbf

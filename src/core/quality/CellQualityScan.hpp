@@ -12,23 +12,25 @@
 // only whether a reference is degenerate, quality 1 by TetQuality's
 // convention, is judged on the cell itself: for references within ~1e-14 of
 // degenerate the two conventions can differ).
-// Tetrahedra (4 vertices) and triangular prisms (6; CellShapes) are stored
-// by their vertices and measured in SIMD lanes (detail::TetBatch; detail::PrismBatch: one
-// prism per lane, its 18 tetrahedra and its worst in the lane), the other
+// Tetrahedra (4 vertices), triangular prisms (6) and hexahedra (8;
+// CellShapes) are stored by their vertices and measured in SIMD lanes
+// (detail::TetBatch; detail::PrismBatch, detail::HexBatch: one cell per
+// lane, its 18 or 24 tetrahedra and its worst in the lane), the other
 // cells by their faces (each cell's faces stored with the cell, reference
 // face and cell centres computed once; their tetrahedra gathered into a
 // detail::TetBatch). The cells are visited in Morton order of their first point
 // (MortonOrder) in blocks, the points renumbered in the order the cells use
 // them; a measurement gathers the current points once into that order: no
 // per-cell allocation, no per-step work on the reference mesh but the
-// prisms' reference edges (recomputed: storing them would take 18 x 9
-// doubles per prism).
+// prisms' and hexahedra's reference edges (recomputed: storing them would
+// take 18 or 24 x 9 doubles per cell).
 //
 // Every cell's value depends only on its own points and no operation is
 // contracted: a measurement with any number of OpenMP threads, in any
 // block and on either SIMD build gives bit-identical values.
 #pragma once
 
+#include "HexBatch.hpp"
 #include "PrismBatch.hpp"
 #include "TetBatch.hpp"
 #include "WorstBatch.hpp"
@@ -107,10 +109,24 @@ public:
     //  (the caller's order; -infinity: none)
     void lowerBounds(const double* p, double* lb) const;
 
+    //- How many cells are measured by each path
+    struct Shapes
+    {
+        std::size_t tetrahedra = 0, prisms = 0, hexahedra = 0, others = 0;
+    };
+    Shapes shapes() const;
+
 private:
     //- How a cell is measured: from its vertices (a tetrahedron: one
-    //  measure; a prism: detail::PrismBatch) or from its faces (general)
-    enum Kind : unsigned char { general, tetrahedron, prism };
+    //  measure; a prism: detail::PrismBatch; a hexahedron:
+    //  detail::HexBatch) or from its faces (general)
+    enum Kind : unsigned char { general, tetrahedron, prism, hexahedron };
+
+    //- Number of vertices of a kind measured from its vertices
+    static int nVertices(const Kind k)
+    {
+        return k == tetrahedron ? 4 : k == prism ? 6 : 8;
+    }
 
     //- The caller's index of each cell, in the order stored (Morton order)
     std::vector<int> order_;
@@ -123,11 +139,12 @@ private:
     mutable std::vector<int> subsetPoint_;
 
     //- Per cell: its kind, and its first vertex in vertices_ (tetrahedra,
-    //  prisms) or its row in the general cells' topology
+    //  prisms, hexahedra) or its row in the general cells' topology
     std::vector<Kind> kind_;
     std::vector<int> slot_;
 
-    //- The tetrahedra's and prisms' vertices (CellShapes' order)
+    //- The tetrahedra's, prisms' and hexahedra's vertices (CellShapes'
+    //  order)
     std::vector<int> vertices_;
 
     //- The general cells: each one's faces stored with it (entries),
@@ -178,6 +195,7 @@ private:
     {
         detail::TetBatch tets;
         detail::PrismBatch prisms;
+        detail::HexBatch hexes;
         detail::WorstBatch finals;
         std::vector<double> buf;
         std::size_t first[blockCells];

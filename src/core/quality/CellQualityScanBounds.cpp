@@ -22,6 +22,12 @@ const int prismFaces[5][4] =
     {0, 1, 2, -1}, {3, 4, 5, -1}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}
 };
 
+//- The hexahedron's faces (CellShapes' vertex order)
+const int hexFaces[6][4] =
+{
+    {0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}
+};
+
 //- Largest |E^-1|_F of the tetrahedra (c, face centre, a, b) of a cell:
 //  faces given by their points' reference coordinates (face f: the points
 //  at x0 + 3 pts[start[f] .. start[f+1]))
@@ -76,17 +82,19 @@ double largestInverseNorm(const double* x0, const std::size_t nFaces, const Face
 double CellQualityScan::kappa(const std::size_t i) const
 {
     const double* x0 = points0_.data();
-    if (kind_[i] == prism)
+    if (kind_[i] == prism || kind_[i] == hexahedron)
     {
         const int* v = &vertices_[std::size_t(slot_[i])];
+        const bool hex = kind_[i] == hexahedron;
         int pts[4];
         return largestInverseNorm
         (
-            x0, 5,
+            x0, hex ? 6 : 5,
             [&](const std::size_t f, int& n) -> const int*
             {
-                n = prismFaces[f][3] < 0 ? 3 : 4;
-                for (int j = 0; j < n; ++j) pts[j] = v[prismFaces[f][j]];
+                const int* face = hex ? hexFaces[f] : prismFaces[f];
+                n = face[3] < 0 ? 3 : 4;
+                for (int j = 0; j < n; ++j) pts[j] = v[face[j]];
                 return pts;
             }
         );
@@ -116,10 +124,10 @@ void CellQualityScan::setUpBounds() const
     {
         // a tetrahedron is measured as cheaply as bounded: never bounded
         v.clear();
-        if (kind_[i] == prism)
+        if (kind_[i] == prism || kind_[i] == hexahedron)
         {
             const int* pv = &vertices_[std::size_t(slot_[i])];
-            v.assign(pv, pv + 6);
+            v.assign(pv, pv + nVertices(kind_[i]));
         }
         else if (kind_[i] == general)
         {

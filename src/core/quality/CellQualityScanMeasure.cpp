@@ -93,13 +93,17 @@ void CellQualityScan::measureBlock
     // The prisms into a detail::PrismBatch, the tetrahedra of the others into a
     // detail::TetBatch (a tetrahedral cell: one, with its own A: every tetrahedron
     // of its decomposition is an affine image of it)
-    std::size_t nTets = 0, nPrisms = 0;
+    std::size_t nTets = 0, nPrisms = 0, nHexes = 0;
     for (std::size_t c = 0; c < m; ++c)
     {
         const std::size_t i = std::size_t(at[c]);
         if (kind_[i] == prism)
         {
             s.first[c] = nPrisms++;
+        }
+        else if (kind_[i] == hexahedron)
+        {
+            s.first[c] = nHexes++;
         }
         else
         {
@@ -109,12 +113,17 @@ void CellQualityScan::measureBlock
     }
     s.tets.resize(nTets);
     s.prisms.resize(nPrisms);
+    s.hexes.resize(nHexes);
     for (std::size_t c = 0; c < m; ++c)
     {
         const std::size_t i = std::size_t(at[c]);
         if (kind_[i] == prism)
         {
             s.prisms.set(s.first[c], x0, x, &vertices_[std::size_t(slot_[i])]);
+        }
+        else if (kind_[i] == hexahedron)
+        {
+            s.hexes.set(s.first[c], x0, x, &vertices_[std::size_t(slot_[i])]);
         }
         else if (kind_[i] == tetrahedron)
         {
@@ -141,11 +150,26 @@ void CellQualityScan::measureBlock
     // qualities in SIMD lanes again (detail::WorstBatch)
     if (nTets) s.tets.measure(metric_, s.finals.wide());
     if (nPrisms) s.prisms.measure(metric_, s.finals.wide());
+    if (nHexes) s.hexes.measure(metric_, s.finals.wide());
     for (std::size_t c = 0; c < m; ++c)
     {
         const std::size_t i = std::size_t(at[c]);
         detail::TetMeasures::Worst worst(metric_);
-        if (kind_[i] != prism)
+        if (kind_[i] == hexahedron)
+        {
+            if (!s.hexes.exact(s.first[c]))
+            {
+                for (int t = 0; t < 24; ++t)
+                {
+                    worst.add(s.hexes.tetJ(s.first[c], t), s.hexes.tetA2(s.first[c], t));
+                }
+            }
+            else
+            {
+                worst = s.hexes.worst(s.first[c], metric_);
+            }
+        }
+        else if (kind_[i] != prism)
         {
             const std::size_t t1 =
                 s.first[c] + (kind_[i] == tetrahedron ? 1 : tetCount(std::size_t(slot_[i])));

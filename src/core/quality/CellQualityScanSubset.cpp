@@ -70,7 +70,7 @@ CellQualityScan::CellQualityScan
         if (from.kind_[i] != general)
         {
             slot_.push_back(int(vertices_.size()));
-            const int nv = from.kind_[i] == tetrahedron ? 4 : 6;
+            const int nv = nVertices(from.kind_[i]);
             for (int v = 0; v < nv; ++v) vertices_.push_back(point(from.vertices_[from0 + v]));
             continue;
         }

@@ -133,4 +133,96 @@ bool prismVertices
     return true;
 }
 
+
+bool hexahedronVertices
+(
+    const std::size_t* start,
+    const std::size_t nFaces,
+    const int* points,
+    int v[8]
+)
+{
+    if (nFaces != 6) return false;
+    for (std::size_t k = 0; k < 6; ++k)
+    {
+        if (start[k + 1] - start[k] != 4) return false;
+    }
+    const int* first = points + start[0];
+    for (int i = 0; i < 4; ++i)
+    {
+        v[i] = first[i];
+        for (int j = 0; j < i; ++j)
+        {
+            if (v[i] == v[j]) return false;
+        }
+    }
+
+    // the opposite face: the one sharing no point with the first
+    const int* opposite = nullptr;
+    for (std::size_t k = 1; k < 6; ++k)
+    {
+        const int* f = points + start[k];
+        bool shares = false;
+        for (int a = 0; a < 4; ++a)
+        {
+            for (int b = 0; b < 4; ++b) shares = shares || f[a] == first[b];
+        }
+        if (!shares)
+        {
+            if (opposite) return false;
+            opposite = f;
+        }
+    }
+    if (!opposite) return false;
+
+    // each point of the first face joined by a side face's edge to exactly
+    // one point of the opposite face
+    for (int i = 0; i < 4; ++i)
+    {
+        v[4 + i] = -1;
+        for (int j = 0; j < 4; ++j)
+        {
+            for (std::size_t k = 1; k < 6; ++k)
+            {
+                const int* f = points + start[k];
+                if (f == opposite || !joined(f, 4, v[i], opposite[j])) continue;
+                if (v[4 + i] >= 0 && v[4 + i] != opposite[j]) return false;
+                v[4 + i] = opposite[j];
+            }
+        }
+        if (v[4 + i] < 0) return false;
+        for (int j = 4; j < 4 + i; ++j)
+        {
+            if (v[j] == v[4 + i]) return false;
+        }
+    }
+
+    // the opposite face is the cycle v4 v5 v6 v7; side face i the cycle
+    // (v_i, v_i+1, v_i+5, v_i+4) for one edge (i, i+1) of the first each
+    for (int i = 0; i < 4; ++i)
+    {
+        if (!joined(opposite, 4, v[4 + i], v[4 + (i + 1) % 4])) return false;
+    }
+    bool used[4] = {false, false, false, false};
+    for (std::size_t k = 1; k < 6; ++k)
+    {
+        const int* f = points + start[k];
+        if (f == opposite) continue;
+        bool found = false;
+        for (int i = 0; i < 4 && !found; ++i)
+        {
+            const int j = (i + 1) % 4;
+            found =
+                !used[i]
+             && joined(f, 4, v[i], v[j])
+             && joined(f, 4, v[j], v[4 + j])
+             && joined(f, 4, v[4 + j], v[4 + i])
+             && joined(f, 4, v[4 + i], v[i]);
+            if (found) used[i] = true;
+        }
+        if (!found) return false;
+    }
+    return true;
+}
+
 } // namespace dcprbf

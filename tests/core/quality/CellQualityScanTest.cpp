@@ -86,6 +86,22 @@ TEST(CellQualityScan, MixedCellsOverManyBlocksEqualTheDecomposition)
 }
 
 
+TEST(CellQualityScan, EachShapeMeasuredByItsPath)
+{
+    // the mixed block: hexahedra (detail::HexBatch), Kuhn tetrahedra, prisms
+    // (faces in every order), recognised; the scan of a general cell (a
+    // hexahedron split by a seventh face) goes from its faces
+    const HexBlock b(6, HexBlock::Split::mixed);
+    const CellQualityScan::Shapes s = b.scan(TetQuality::Metric::sizeShape).shapes();
+    EXPECT_EQ(s.hexahedra, 72u);
+    EXPECT_EQ(s.tetrahedra, 6*72u);
+    EXPECT_EQ(s.prisms, 2*72u);
+    EXPECT_EQ(s.others, 0u);
+    const HexBlock h(3);
+    EXPECT_EQ(h.scan(TetQuality::Metric::sizeShape).shapes().hexahedra, 27u);
+}
+
+
 TEST(CellQualityScan, RigidMotionIsOne)
 {
     const HexBlock b(3);
