@@ -132,6 +132,28 @@ int main(int argc, char *argv[])
             << ", with the 5 lowest only (qualityScan lowest) " << tLowest
             << " ms" << nl;
     }
+    // the flat scan's time per cell by the path a cell takes (1 thread):
+    // each kind's cells as a subset of the region's scan
+    omp_set_num_threads(1);
+    typedef dcprbf::CellQualityScan::Kind kind;
+    const std::pair<kind, const char*> kinds[] =
+    {
+        {kind::hexahedron, "hexahedra"}, {kind::prism, "prisms"},
+        {kind::tetrahedron, "tetrahedra"}, {kind::general, "polyhedra (from their faces)"}
+    };
+    Info<< "per cell, 1 thread:";
+    for (const auto& k : kinds)
+    {
+        const labelList positions(region.cellQuality().cellsOfKind(k.first));
+        if (positions.empty()) continue;
+        const dcpRBFCellQuality sub(region.cellQuality(), positions, p0);
+        scalarField qs;
+        const scalar t = medianMs(n, [&]{ qs = sub.compute(p); });
+        Info<< ' ' << k.second << ' ' << positions.size() << ": "
+            << 1e6*t/positions.size() << " ns";
+    }
+    Info<< nl;
+
     omp_set_num_threads(nt);
     if (reference)
     {

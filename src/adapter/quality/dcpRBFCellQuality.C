@@ -247,6 +247,23 @@ Foam::scalarField Foam::dcpRBFCellQuality::compute
 }
 
 
+Foam::labelList Foam::dcpRBFCellQuality::cellsOfKind
+(
+    const dcprbf::CellQualityScan::Kind k
+) const
+{
+    labelList positions;
+    if (scan_.valid())
+    {
+        for (const int i : scan_->cellsOfKind(k))
+        {
+            positions.append(scanned_[i]);
+        }
+    }
+    return positions;
+}
+
+
 Foam::scalarField Foam::dcpRBFCellQuality::compute(const pointField& p) const
 {
     scalarField q;

@@ -221,6 +221,18 @@ void CellQualityScan::classify(std::vector<std::size_t>& cellStart)
 }
 
 
+std::vector<int> CellQualityScan::cellsOfKind(const Kind k) const
+{
+    std::vector<int> cells;
+    for (std::size_t i = 0; i < kind_.size(); ++i)
+    {
+        if (kind_[i] == k) cells.push_back(order_[i]);
+    }
+    std::sort(cells.begin(), cells.end());
+    return cells;
+}
+
+
 CellQualityScan::Shapes CellQualityScan::shapes() const
 {
     Shapes s;

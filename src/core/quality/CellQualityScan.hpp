@@ -109,14 +109,6 @@ public:
     //  (the caller's order; -infinity: none)
     void lowerBounds(const double* p, double* lb) const;
 
-    //- How many cells are measured by each path
-    struct Shapes
-    {
-        std::size_t tetrahedra = 0, prisms = 0, hexahedra = 0, others = 0;
-    };
-    Shapes shapes() const;
-
-private:
     //- How a cell is measured: from its vertices (a tetrahedron: one
     //  measure; a prism: detail::PrismBatch; a hexahedron:
     //  detail::HexBatch) or from its faces (general)
@@ -127,6 +119,18 @@ private:
     {
         return k == tetrahedron ? 4 : k == prism ? 6 : 8;
     }
+
+    //- The cells (the caller's indices) measured as kind k
+    std::vector<int> cellsOfKind(Kind k) const;
+
+    //- How many cells are measured by each path
+    struct Shapes
+    {
+        std::size_t tetrahedra = 0, prisms = 0, hexahedra = 0, others = 0;
+    };
+    Shapes shapes() const;
+
+private:
 
     //- The caller's index of each cell, in the order stored (Morton order)
     std::vector<int> order_;
