@@ -109,7 +109,7 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
         FatalErrorInFunction
             << "A subset of a cell quality constructed without cells, or"
             << " reference points not the mesh's (" << points0.size() << " for "
-            << mesh_.nPoints() << " points)" << abort(FatalError);
+            << mesh_.nPoints() << " points)" << exit(FatalError);
     }
     if (from.scanOf_.size() != from.nCells_)
     {
@@ -133,7 +133,7 @@ Foam::dcpRBFCellQuality::dcpRBFCellQuality
         {
             FatalErrorInFunction
                 << "Position " << positions[i] << " of a subset of "
-                << from.nCells_ << " cells" << abort(FatalError);
+                << from.nCells_ << " cells" << exit(FatalError);
         }
         const label k = from.scanOf_[positions[i]];
         if (k >= 0)
