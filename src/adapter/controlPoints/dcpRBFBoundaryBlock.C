@@ -53,17 +53,20 @@ Foam::label Foam::dcpRBFBoundaryBlock::begin(const label n, const label proci)
 dcprbf::Values Foam::dcpRBFBoundaryBlock::values
 (
     const dcprbf::RbfEvaluator& s,
-    const std::size_t budget
+    const std::size_t budget,
+    const dcprbf::Points& otherwise,
+    bool& stored
 ) const
 {
     dcprbf::Values v;
-    if (stored_.prepare(s.centres(), budget))
+    stored = stored_.prepare(s.centres(), budget);
+    if (stored)
     {
         stored_.evaluate(s.weights(), s.polynomialCoeffs(), v);
     }
     else
     {
-        v = s.evaluate(points_);
+        v = s.evaluate(otherwise);
     }
     return v;
 }
@@ -75,7 +78,8 @@ dcprbf::Values Foam::dcpRBFBoundaryBlock::gathered
     const std::size_t budget
 ) const
 {
-    const dcprbf::Values mine(values(s, budget));
+    bool stored;
+    const dcprbf::Values mine(values(s, budget, points_, stored));
     if (!Pstream::parRun())
     {
         return mine;
@@ -108,16 +112,8 @@ Foam::scalar Foam::dcpRBFBoundaryBlock::largestMovingError
 {
     // stored: at every candidate of the block, one product; else the
     // block's moving ones alone
-    const bool stored = stored_.prepare(s.centres(), budget);
-    dcprbf::Values v;
-    if (stored)
-    {
-        stored_.evaluate(s.weights(), s.polynomialCoeffs(), v);
-    }
-    else
-    {
-        v = s.evaluate(movingPoints_);
-    }
+    bool stored;
+    const dcprbf::Values v(values(s, budget, movingPoints_, stored));
     scalar err = 0;
     label mine = -1;
     for (std::size_t k = 0; k < moving_.size(); ++k)

@@ -7,6 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFMotionSolver.H"
+#include "dcpRBFResidentMemory.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -151,7 +152,9 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 :
     displacementMotionSolver(mesh, dict, typeName),
     inNewPoints_(false),
-    nReusedPoints_(0)
+    nReusedPoints_(0),
+    meshMB_(debug ? dcpRBFResidentMemory::residentMB() : -1),
+    storedReported_(std::size_t(-1))
 {
     construct();
 }
@@ -167,7 +170,9 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 :
     displacementMotionSolver(mesh, dict, pointDisplacement, points0, typeName),
     inNewPoints_(false),
-    nReusedPoints_(0)
+    nReusedPoints_(0),
+    meshMB_(debug ? dcpRBFResidentMemory::residentMB() : -1),
+    storedReported_(std::size_t(-1))
 {
     construct();
 }
@@ -193,6 +198,10 @@ void Foam::dcpRBFMotionSolver::moveWithControlPoints
     quality_->changed();
     step.boundaryError = interpolation_->interpolate(d);
     timer_->split(&part::interpolate);
+    if (debug)
+    {
+        reportMemory();
+    }
 
     // Check: the new mesh's quality, unless the swap rule measures the
     // mesh it keeps itself (one measurement)
@@ -221,6 +230,30 @@ void Foam::dcpRBFMotionSolver::moveWithControlPoints
     {
         writer_->write(controlPoints_->set(), d);
     }
+}
+
+
+void Foam::dcpRBFMotionSolver::reportMemory()
+{
+    const std::size_t bytes[2] =
+        {interpolation_->storedBytes(), controlPoints_->storedBytes()};
+    label changed = bytes[0] + bytes[1] != storedReported_;
+    reduce(changed, maxOp<label>());
+    if (!changed)
+    {
+        return;
+    }
+    storedReported_ = bytes[0] + bytes[1];
+    const scalar MB = 1024*1024;
+    scalar mesh = meshMB_;
+    scalar points = bytes[0]/MB;
+    scalar candidates = bytes[1]/MB;
+    reduce(mesh, maxOp<scalar>());
+    reduce(points, maxOp<scalar>());
+    reduce(candidates, maxOp<scalar>());
+    Info<< typeName << ": resident memory by part, largest processor [MB]:"
+        << " mesh " << mesh << ", stored matrices " << points
+        << " (mesh points) " << candidates << " (candidates)" << endl;
 }
 
 

@@ -89,11 +89,7 @@ static DCPRBF_ALWAYS_INLINE void item
         DCPRBF_V3(12), DCPRBF_V3(13), DCPRBF_V3(14), DCPRBF_V3(15)
     );
     #undef DCPRBF_V3
-    out[p] = w.J;
-    out[s + p] = w.a2;
-    out[2*s + p] = w.key;
-    out[3*s + p] = w.other;
-    out[4*s + p] = w.beyond;
+    w.write(out, p, s);
 }
 };
 

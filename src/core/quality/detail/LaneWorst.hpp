@@ -41,6 +41,17 @@ struct LaneWorst
         beyond += (J1 > 0 ? 1.0 : 0.0) - (k > 1e-250 ? 1.0 : 0.0);
     }
 
+    //- Into lane p of out (rows s apart): J, a2, key, other, beyond (the
+    //  cell batches' first five rows, LaneCellBatch)
+    DCPRBF_ALWAYS_INLINE void write(double* out, const std::size_t p, const std::size_t s) const
+    {
+        out[p] = J;
+        out[s + p] = a2;
+        out[2*s + p] = key;
+        out[3*s + p] = other;
+        out[4*s + p] = beyond;
+    }
+
     //- WorstBatch's final quality: the ranked worst's, the least with the
     //  others (where nothing is beyond the range)
     template<int M>

@@ -82,11 +82,7 @@ static DCPRBF_ALWAYS_INLINE void item
         DCPRBF_V3(6), DCPRBF_V3(7), DCPRBF_V3(8), DCPRBF_V3(9), DCPRBF_V3(10), DCPRBF_V3(11)
     );
     #undef DCPRBF_V3
-    out[p] = w.J;
-    out[s + p] = w.a2;
-    out[2*s + p] = w.key;
-    out[3*s + p] = w.other;
-    out[4*s + p] = w.beyond;
+    w.write(out, p, s);
 }
 };
 
