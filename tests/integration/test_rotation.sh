@@ -80,7 +80,7 @@ test_rotation3D_airfoilSlab_parallelEqualsSerial() {
 # without boundary correction, equals serial
 test_rotation2D_parallelManual_bendingWing_equalsSerial() {
     bendingWingCase || return 1
-    everySelectionParallelEqualsSerial 0.5 "$rotationCoeffs2D"
+    everySelectionParallelEqualsSerial 0.5 "$rotationCoeffs2D" correctionMoves
 }
 
 # restart at t = 0.5 (163 deg) to t = 1 (230 deg): the restarted run must

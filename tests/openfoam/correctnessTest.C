@@ -352,8 +352,8 @@ TEST(StoredEvaluation, BoundaryValuesEqualTheEvaluator)
         prescribe(solver.pointDisplacement(), "bottom", [a](const point& x) { return bump(x, a); });
         c.mesh().movePoints(ms->newPoints());
         sets.insert(cp.set().indices());
-        const dcprbf::Values stored(cp.boundaryValues());
-        const dcprbf::Values direct(cp.evaluator().evaluate(cp.candidates()));
+        const dcprbf::Values stored(cp.blockValues());
+        const dcprbf::Values direct(cp.evaluator().evaluate(cp.block().points()));
         ASSERT_EQ(stored.rows(), direct.rows());
         EXPECT_LT((stored - direct).cwiseAbs().maxCoeff(), 1e-13) << "step " << step;
     }

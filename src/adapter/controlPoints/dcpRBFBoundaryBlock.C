@@ -7,9 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFBoundaryBlock.H"
-#include "dcpRBFVersion.H"
 #include "PstreamReduceOps.H"
-#include "scalarList.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -28,6 +26,7 @@ Foam::dcpRBFBoundaryBlock::dcpRBFBoundaryBlock
             begin_, begin(boundary.size(), Pstream::myProcNo() + 1) - begin_
         )
     ),
+    blocks_(label(points_.rows())),
     stored_(kernel, polynomial, points_)
 {
     for (Eigen::Index i = 0; i < points_.rows(); ++i)
@@ -72,33 +71,14 @@ dcprbf::Values Foam::dcpRBFBoundaryBlock::values
 }
 
 
-dcprbf::Values Foam::dcpRBFBoundaryBlock::gathered
+dcprbf::Values Foam::dcpRBFBoundaryBlock::atBlock
 (
     const dcprbf::RbfEvaluator& s,
     const std::size_t budget
 ) const
 {
     bool stored;
-    const dcprbf::Values mine(values(s, budget, points_, stored));
-    if (!Pstream::parRun())
-    {
-        return mine;
-    }
-    List<scalarList> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = dcpRBFCompat::makeList<scalar>
-    (
-        mine.data(), mine.data() + mine.size()
-    );
-    dcpRBFCompat::allGatherList(all);
-    label n = 0;
-    for (const scalarList& block : all) n += block.size();
-    dcprbf::Values v(n/3, 3);
-    double* out = v.data();
-    for (const scalarList& block : all)
-    {
-        out = std::copy(block.begin(), block.end(), out);
-    }
-    return v;
+    return values(s, budget, points_, stored);
 }
 
 

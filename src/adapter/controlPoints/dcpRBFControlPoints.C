@@ -246,9 +246,9 @@ Foam::scalar Foam::dcpRBFControlPoints::boundaryError
 }
 
 
-dcprbf::Values Foam::dcpRBFControlPoints::boundaryValues() const
+dcprbf::Values Foam::dcpRBFControlPoints::blockValues() const
 {
-    return block_.gathered(set_.evaluator(), storageBudget()/16);
+    return block_.atBlock(set_.evaluator(), storageBudget()/16);
 }
 
 

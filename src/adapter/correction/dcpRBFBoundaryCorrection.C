@@ -11,6 +11,7 @@ License
 #include "RadialKernel.hpp"
 #include "DynamicList.H"
 #include "UIndirectList.H"
+#include "PstreamReduceOps.H"
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,7 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
 (
     const dcprbf::Points& evalPoints,
     const dcpRBFBoundaryPoints& boundary,
+    const globalIndex& blocks,
     const scalar maxRadius
 )
 :
@@ -44,7 +46,12 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
     (
         evalPoints, boundary.points(), interiorMask(boundary), maxRadius
     )
-{}
+{
+    // nearest_ renumbered: this processor's block first, then the others'
+    // targets it needs, each once
+    List<Map<label>> compactMap;
+    halo_.reset(new mapDistribute(blocks, nearest_, compactMap));
+}
 
 
 Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
@@ -110,11 +117,26 @@ Foam::scalar Foam::dcpRBFBoundaryCorrection::apply
     vectorField& displacement
 ) const
 {
-    const scalar eMax = error.rows() ? error.rowwise().norm().maxCoeff() : 0;
+    scalar eMax = error.rows() ? error.rowwise().norm().maxCoeff() : 0;
+    if (halo_)
+    {
+        reduce(eMax, maxOp<scalar>());
+    }
     const scalar R = min(radiusFactor*eMax, maxRadius_);
     if (!(R > 0))
     {
         return 0;
+    }
+    // the errors in the mesh's axes, once per target (with the halo: the
+    // others' after the block's, on every processor)
+    vectorField errorOnMesh(label(error.rows()));
+    forAll(errorOnMesh, b)
+    {
+        errorOnMesh[b] = projection.fromCore(error.row(b).data());
+    }
+    if (halo_)
+    {
+        halo_->distribute(errorOnMesh);
     }
     const dcprbf::kernels::WendlandC2 phi{1.0/R};
     // the points within R (ascending distance); each point once: threads
@@ -124,12 +146,6 @@ Foam::scalar Foam::dcpRBFBoundaryCorrection::apply
     if (kEnd == 0)
     {
         return R;
-    }
-    // the errors in the mesh's axes, once per target
-    vectorField errorOnMesh(label(error.rows()));
-    forAll(errorOnMesh, b)
-    {
-        errorOnMesh[b] = projection.fromCore(error.row(b).data());
     }
     const label* point = point_.cdata();
     const label* nearest = nearest_.cdata();

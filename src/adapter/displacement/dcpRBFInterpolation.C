@@ -7,6 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFInterpolation.H"
+#include "PstreamReduceOps.H"
 
 #include <numeric>
 
@@ -42,7 +43,11 @@ Foam::dcpRBFInterpolation::dcpRBFInterpolation
         settings.kernel(), controlPoints.evaluator().polynomial(),
         distinct.points()
     ),
-    correction_(evalPoints, boundaryPoints, settings.kernel().radius())
+    correction_
+    (
+        evalPoints, boundaryPoints, controlPoints.block().blocks(),
+        settings.kernel().radius()
+    )
 {
     // Each distinct reference point's interior points
     {
@@ -184,9 +189,15 @@ Foam::scalar Foam::dcpRBFInterpolation::correct
     const dcprbf::Values& d
 )
 {
-    // Error at the boundary points, blended into the volume
+    // Error at this processor's block of the boundary points, blended
+    // into the volume (the correction fetches the errors its points need)
     vectorField& disp = pointDisplacement_.primitiveFieldRef();
-    const dcprbf::Values error(d - controlPoints_.boundaryValues());
+    const label b0 = controlPoints_.block().begin();
+    const dcprbf::Values error
+    (
+        d.middleRows(b0, controlPoints_.block().end() - b0)
+      - controlPoints_.blockValues()
+    );
     if (settings_.boundaryCorrection())
     {
         correction_.apply(error, projection_, disp);
@@ -194,10 +205,11 @@ Foam::scalar Foam::dcpRBFInterpolation::correct
     prescribed_.constrainInterpolated();
 
     scalar err = 0;
-    forAll(boundaryPoints_.moving(), i)
+    for (label i = 0; i < label(error.rows()); ++i)
     {
-        if (boundaryPoints_.moving()[i]) err = max(err, error.row(i).norm());
+        if (boundaryPoints_.moving()[b0 + i]) err = max(err, error.row(i).norm());
     }
+    reduce(err, maxOp<scalar>());
     const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
     return dMax > 0 ? err/dMax : 0;
 }
