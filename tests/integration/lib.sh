@@ -74,15 +74,22 @@ pointsAgree() {
 }
 
 # run APP ARGS...: run an OpenFOAM application, log to log.APP[.n] (n: the
-# number of its logs so far); fails the test if the application fails
+# number of its logs so far); fails the test if the application fails or
+# runs longer than DCPRBF_APP_TIMEOUT seconds (default 1200: a hang, e.g.
+# processors waiting on each other, ends the test, not the whole tier)
 run() {
-    local log="log.$1" logs
+    local log="log.$1" logs rc=0 limit="${DCPRBF_APP_TIMEOUT:-1200}"
     if [ -f "$log" ]
     then
         logs=("log.$1"*)
         log="$log.${#logs[@]}"
     fi
-    "$@" > "$log" 2>&1 \
+    timeout --kill-after=10 "$limit" "$@" > "$log" 2>&1 || rc=$?
+    if [ "$rc" -eq 124 ] || [ "$rc" -eq 137 ]
+    then
+        fail "$* did not end within $limit s (DCPRBF_APP_TIMEOUT): see $(pwd)/$log"
+    fi
+    [ "$rc" -eq 0 ] \
         || fail "$* failed: see $(pwd)/$log$(grep -h -A4 "FOAM FATAL" "$log" | grep -v '^ *$' | head -n 6 | sed 's/^/\n    /')"
 }
 
