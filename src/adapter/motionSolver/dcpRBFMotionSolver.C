@@ -236,7 +236,7 @@ void Foam::dcpRBFMotionSolver::moveWithControlPoints
 void Foam::dcpRBFMotionSolver::reportMemory()
 {
     const std::size_t bytes[2] =
-        {interpolation_->storedBytes(), controlPoints_->storedBytes()};
+        {interpolation_->storedBytes(), controlPoints_->block().storedBytes()};
     label changed = bytes[0] + bytes[1] != storedReported_;
     reduce(changed, maxOp<label>());
     if (!changed)
