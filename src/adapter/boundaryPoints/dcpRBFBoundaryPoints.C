@@ -158,6 +158,24 @@ dcprbf::Points Foam::dcpRBFBoundaryPoints::movingPoints() const
 }
 
 
+Foam::globalIndex Foam::dcpRBFBoundaryPoints::holders() const
+{
+    return globalIndex(localPoints_.size());
+}
+
+
+Foam::labelList Foam::dcpRBFBoundaryPoints::firstHolders() const
+{
+    // (concatToGlobal_ is in holders()'s numbering: the first k wins)
+    labelList first(size(), -1);
+    forAll(concatToGlobal_, k)
+    {
+        if (first[concatToGlobal_[k]] < 0) first[concatToGlobal_[k]] = k;
+    }
+    return first;
+}
+
+
 dcprbf::Values Foam::dcpRBFBoundaryPoints::gather
 (
     const pointField& prescribed
@@ -171,15 +189,6 @@ dcprbf::Values Foam::dcpRBFBoundaryPoints::gather
             local[i] = prescribed[localPoints_[i]];
         }
     }
-    return gatherLocal(local);
-}
-
-
-dcprbf::Values Foam::dcpRBFBoundaryPoints::gatherLocal
-(
-    const vectorField& local
-) const
-{
     const List<List<vector>> all(allGather<vector>(local));
 
     dcprbf::Values values(dcprbf::Values::Zero(size(), 3));

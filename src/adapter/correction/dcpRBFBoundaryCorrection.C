@@ -32,6 +32,25 @@ Foam::boolList Foam::dcpRBFBoundaryCorrection::interiorMask
 }
 
 
+void Foam::dcpRBFBoundaryCorrection::fetchFrom
+(
+    const globalIndex& sources,
+    const labelList& sourceOf
+)
+{
+    if (sourceOf.size())
+    {
+        forAll(nearest_, k)
+        {
+            nearest_[k] = sourceOf[nearest_[k]];
+        }
+    }
+    // this processor's sources first, then the others' it needs, each once
+    List<Map<label>> compactMap;
+    halo_.reset(new mapDistribute(sources, nearest_, compactMap));
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
@@ -47,10 +66,25 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
         evalPoints, boundary.points(), interiorMask(boundary), maxRadius
     )
 {
-    // nearest_ renumbered: this processor's block first, then the others'
-    // targets it needs, each once
-    List<Map<label>> compactMap;
-    halo_.reset(new mapDistribute(blocks, nearest_, compactMap));
+    fetchFrom(blocks, labelList());
+}
+
+
+Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
+(
+    const dcprbf::Points& evalPoints,
+    const dcpRBFBoundaryPoints& targets,
+    const boolList& corrected,
+    const scalar maxRadius,
+    const scalarField& targetRadius
+)
+:
+    dcpRBFBoundaryCorrection
+    (
+        evalPoints, targets.points(), corrected, maxRadius, targetRadius
+    )
+{
+    fetchFrom(targets.holders(), targets.firstHolders());
 }
 
 
@@ -63,8 +97,7 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
     const scalarField& targetRadius
 )
 :
-    maxRadius_(maxRadius),
-    targetRadius_(targetRadius)
+    maxRadius_(maxRadius)
 {
     if (targets.rows() == 0)
     {
@@ -105,6 +138,10 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
     point_.transfer(interior);
     nearest_ = labelList(UIndirectList<label>(nearest, point_));
     distance_ = scalarField(UIndirectList<scalar>(distance, point_));
+    if (targetRadius.size())
+    {
+        radius_ = scalarField(UIndirectList<scalar>(targetRadius, nearest_));
+    }
 }
 
 
@@ -152,7 +189,7 @@ Foam::scalar Foam::dcpRBFBoundaryCorrection::apply
     const scalar* distance = distance_.cdata();
     const vector* e = errorOnMesh.cdata();
     vector* d = displacement.data();
-    if (targetRadius_.empty())
+    if (radius_.empty())
     {
         #pragma omp parallel for schedule(static) if(kEnd >= minParallelPoints)
         for (label k = 0; k < kEnd; ++k)
@@ -164,14 +201,13 @@ Foam::scalar Foam::dcpRBFBoundaryCorrection::apply
     #pragma omp parallel for schedule(static) if(kEnd >= minParallelPoints)
     for (label k = 0; k < kEnd; ++k)
     {
-        const label b = nearest[k];
         const scalar weight =
-            targetRadius_[b] >= R
+            radius_[k] >= R
           ? phi(distance[k])
-          : distance[k] < targetRadius_[b]
-          ? dcprbf::kernels::WendlandC2{1.0/targetRadius_[b]}(distance[k])
+          : distance[k] < radius_[k]
+          ? dcprbf::kernels::WendlandC2{1.0/radius_[k]}(distance[k])
           : 0;
-        d[point[k]] += weight*e[b];
+        d[point[k]] += weight*e[nearest[k]];
     }
     return R;
 }

@@ -11,6 +11,7 @@ License
 #include "PointTree.hpp"
 
 #include <cmath>
+#include <vector>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -85,7 +86,10 @@ Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
         wall* w = new wall;
         w->blend.reset
         (
-            new dcpRBFBoundaryCorrection(evalPoints, x, corrected, maxRadius, radius)
+            new dcpRBFBoundaryCorrection
+            (
+                evalPoints, *points, corrected, maxRadius, radius
+            )
         );
         w->patches = patchIDs;
         w->members.setSize(patchIDs.size());
@@ -174,9 +178,11 @@ Foam::scalar Foam::dcpRBFSlipCorrection::apply
     vectorField& displacement
 ) const
 {
-    // every wall's change gathered first (the blends then move points of
-    // the other walls)
+    // every wall's change first (the blends then move points of the other
+    // walls): per point this processor holds (the blend fetches the others
+    // it needs)
     List<dcprbf::Values> changes(walls_.size());
+    std::vector<char> blended(std::size_t(walls_.size()), 0);
     forAll(walls_, w)
     {
         const labelList& local = walls_[w].points->localPoints();
@@ -192,7 +198,7 @@ Foam::scalar Foam::dcpRBFSlipCorrection::apply
             }
         }
         // a wall whose condition changed nothing (a symmetry plane the
-        // motion runs along): no gather, no blend (one reduction)
+        // motion runs along): no blend (one reduction)
         if (returnReduce(max(magSqr(ownChange)), maxOp<scalar>()) <= 0)
         {
             continue;
@@ -209,17 +215,18 @@ Foam::scalar Foam::dcpRBFSlipCorrection::apply
             (
                 mesh_, change, maxMagSqrEqOp<vector>(), vector::zero
             );
-            changes[w] = walls_[w].points->gatherLocal(vectorField(change, local));
+            changes[w] = projection.toCore(vectorField(change, local));
         }
         else
         {
-            changes[w] = walls_[w].points->gatherLocal(ownChange);
+            changes[w] = projection.toCore(ownChange);
         }
+        blended[w] = true;
     }
     scalar radius = 0;
     forAll(walls_, w)
     {
-        if (changes[w].rows())
+        if (blended[w])
         {
             radius = max(radius, walls_[w].blend->apply(changes[w], projection, displacement));
         }
