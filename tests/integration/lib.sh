@@ -73,6 +73,27 @@ pointsAgree() {
         || fail "$4 differ: $diff"
 }
 
+# asciiPoints BINARY ASCII: a points file written with writeFormat binary
+# (label size 32 or 64, double precision) written as ascii points at full
+# precision, for pointsAgree
+asciiPoints() {
+    python3 - "$1" "$2" <<'EOT' || fail "cannot read $1 as binary points"
+import re, struct, sys
+data = open(sys.argv[1], "rb").read()
+body = data.index(b"}", data.index(b"FoamFile")) + 1
+m = re.compile(rb"\s(\d+)\s*\(").search(data, body)
+n, start = int(m.group(1)), m.end()
+values = struct.unpack("<%dd" % (3*n), data[start:start + 24*n])
+if data[start + 24*n:start + 24*n + 1] != b")":
+    sys.exit("%s: not %d binary points" % (sys.argv[1], n))
+with open(sys.argv[2], "w") as out:
+    out.write("%d\n(\n" % n)
+    for i in range(n):
+        out.write("(%.17g %.17g %.17g)\n" % values[3*i:3*i + 3])
+    out.write(")\n")
+EOT
+}
+
 # run APP ARGS...: run an OpenFOAM application, log to log.APP[.n] (n: the
 # number of its logs so far); fails the test if the application fails or
 # runs longer than DCPRBF_APP_TIMEOUT seconds (default 1200: a hang, e.g.

@@ -8,6 +8,10 @@ License
 
 #include "dcpRBFStateDictionary.H"
 #include "Time.H"
+#include "IStringStream.H"
+#include "OStringStream.H"
+
+#include <limits>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -31,16 +35,37 @@ Foam::dcpRBFStateDictionary::dcpRBFStateDictionary
         )
     ),
     fill_(std::move(fill))
-{}
+{
+    // The entries are text whatever format the header names (the case's
+    // writeFormat): read as binary, a list would be read as raw bytes, which
+    // a dictionary entry cannot give. Parsed again as text, at full precision
+    if (size())
+    {
+        OStringStream text;
+        text.precision(std::numeric_limits<double>::max_digits10);
+        dictionary::write(text, false);
+        IStringStream is(text.str());
+        clear();
+        dictionary::read(is);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 bool Foam::dcpRBFStateDictionary::writeData(Ostream& os) const
 {
+    // At full precision whatever writePrecision, so that a restart
+    // continues exactly (the entries are made as text at the default
+    // precision, then written at the stream's)
+    const int digits = std::numeric_limits<double>::max_digits10;
+    const unsigned defaultDigits = IOstream::defaultPrecision(digits);
     dictionary state(*this);
     fill_(state);
+    IOstream::defaultPrecision(defaultDigits);
+    const int osDigits = os.precision(digits);
     state.write(os, false);
+    os.precision(osDigits);
     return os.good();
 }
 
