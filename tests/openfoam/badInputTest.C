@@ -10,6 +10,9 @@ License
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+#include <sstream>
+
 using namespace Foam;
 using namespace Foam::dcpRBFTest;
 
@@ -43,7 +46,7 @@ std::vector<badInput> catalogue()
         {"EmptyPatchAsMoving", "movingPatches (front);" + st + r, "empty"},
         {"ZeroRadius", mv + st + "supportRadius 0;", "supportRadius"},
         {"NegativeRadius", mv + st + "supportRadius -1;", "supportRadius"},
-        {"MissingRadius", mv + st, "supportRadius"},
+        {"MissingRadius", mv + st, "Keyword supportRadius missing: a length [m], e.g. supportRadius 2.5; or a factor"},
         {"UnknownKeyword", mv + st + r + "suportRadius 2;", "suportRadius"},
         {"MisspeltRequiredKeyword", mv + st + "suportRadius 0.5;", "Unknown keyword suportRadius"},
         {"PolynomialNotBool", mv + st + r + "polynomial maybe;", "polynomial"},
@@ -127,7 +130,7 @@ std::vector<badInput> catalogue()
         {"RadiusHuge", mv + st + "supportRadius 1e200;", "supportRadius 1e+200 is no length for this mesh"},
         {"RadiusTiny", mv + st + "supportRadius 1e-200;", "supportRadius 1e-200 is no length for this mesh"},
         {"RelativeRadiusNegative", mv + st + "supportRadius -2 movingExtent;", "supportRadius"},
-        {"MovingPatchesWord", "movingPatches bottom;" + st + r, "movingPatches"},
+        {"MovingPatchesWord", "movingPatches bottom;" + st + r, "movingPatches (wing \"flap.*\"); got bottom"},
         {"StaticPatchesWord", mv + "staticPatches top;" + r, "staticPatches"},
         {"MovingPatchesNumber", "movingPatches (1);" + st + r, "movingPatches"},
         {"MissingStaticPatches", mv + r, "staticPatches"},
@@ -208,7 +211,11 @@ TEST(BadInput, MissingCoeffsDictionaryIsNamed)
     testCase c(2, 3, "movingPatches (bottom); staticPatches (top left right); supportRadius 0.5;");
     // at the top level; misnamed; at the top level with only the legacy
     // selection keyword "solver" (no dynamicFvMesh, no motionSolver)
-    for (const word& misnamed : {word::null, word("dcpRBFCoeff"), word("solver")})
+    for
+    (
+        const word& misnamed :
+        {word::null, word("dcpRBFCoeff"), word("dcpRbfCoeffs"), word("solver")}
+    )
     {
         IOdictionary d(c.dynamicMeshDict());
         const dictionary coeffs(d.subDict("dcpRBFCoeffs"));
@@ -237,9 +244,9 @@ TEST(BadInput, MissingCoeffsDictionaryIsNamed)
         {
             EXPECT_NE(e.message().find("No dcpRBFCoeffs sub-dictionary"), std::string::npos)
                 << "message: " << e.message();
-            if (misnamed == "dcpRBFCoeff")
+            if (misnamed.size() && misnamed != "solver")
             {
-                EXPECT_NE(e.message().find("found dcpRBFCoeff:"), std::string::npos)
+                EXPECT_NE(e.message().find("found " + misnamed + ":"), std::string::npos)
                     << "message: " << e.message();
             }
         }
@@ -265,6 +272,88 @@ TEST(BadInput, UnknownSimdWidthWordIsNamed)
         EXPECT_NE(e.message().find("DCPRBF_SIMD_WIDTH is \"avx2\": not a width in bits"), std::string::npos)
             << "message: " << e.message();
     }
+}
+
+// A velocity solver's case (0/pointMotionU, no 0/pointDisplacement): the
+// error says what dcpRBF reads and names the field it found, not only
+// OpenFOAM's "cannot find file"
+TEST(BadInput, PointMotionUInsteadOfPointDisplacementIsNamed)
+{
+    testCase c(2, 3, "movingPatches (bottom); staticPatches (top left right); supportRadius 0.5;");
+    rm(c.dir()/"0/pointDisplacement");
+    c.write
+    (
+        "0/pointMotionU", "pointVectorField",
+        "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+        "boundaryField { \".*\" { type fixedValue; value uniform (0 0 0); }"
+        " \"(front|back)\" { type empty; } }\n"
+    );
+    try
+    {
+        autoPtr<motionSolver> ms(select(c));
+        FAIL() << "no error without 0/pointDisplacement";
+    }
+    catch (const Foam::error& e)
+    {
+        for (const char* says : {"there is none in 0/", "There is a pointMotionU, a point velocity"})
+        {
+            EXPECT_NE(e.message().find(says), std::string::npos) << "message: " << e.message();
+        }
+    }
+}
+
+// dynamicMeshDict edited while running (runTimeModifiable: OpenFOAM calls
+// read()): the run keeps its settings and a warning names every entry that
+// changed, a keyword dcpRBF does not know included; nothing changed: silence
+TEST(BadInput, EditWhileRunningIsNamed)
+{
+    const std::string coeffs
+    (
+        "movingPatches (bottom); staticPatches (top left right);"
+        " controlPoints { selection greedy; }"
+    );
+    testCase c(2, 3, coeffs + " supportRadius 0.5;");
+    autoPtr<motionSolver> ms(select(c));
+    const auto reread = [&](const std::string& now)
+    {
+        c.write
+        (
+            "constant/dynamicMeshDict", "dictionary",
+            "dynamicFvMesh dynamicMotionSolverFvMesh;\nmotionSolver dcpRBF;\n"
+            "dcpRBFCoeffs\n{\n" + now + "\n}\n"
+        );
+        std::ostringstream out;
+        std::streambuf* const was = std::cout.rdbuf(out.rdbuf());
+        const bool ok = ms->read();
+        std::cout.rdbuf(was);
+        EXPECT_TRUE(ok);
+        return out.str();
+    };
+    EXPECT_EQ(reread(coeffs + " supportRadius 0.5;"), "");
+    const std::string log
+    (
+        reread
+        (
+            "movingPatches (bottom); staticPatches (top left right);"
+            " controlPoints { selection dynamic; } supportRadius 0.8; bogusKeyword 1;"
+        )
+    );
+    for
+    (
+        const char* says :
+        {
+            "dcpRBFCoeffs changed while running (controlPoints/selection greedy -> dynamic,"
+            " supportRadius 0.5 -> 0.8, bogusKeyword (none) -> 1)",
+            "this run goes on with those"
+        }
+    )
+    {
+        EXPECT_NE(log.find(says), std::string::npos) << "log: " << log;
+    }
+    const auto& solver = refCast<const dcpRBFMotionSolver>(ms());
+    EXPECT_EQ(solver.settings().kernel().radius(), 0.5);
+    // edited back as the run started: nothing to say
+    EXPECT_EQ(reread(coeffs + " supportRadius 0.5;"), "");
 }
 
 } // namespace

@@ -150,11 +150,12 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
     const IOdictionary& dict
 )
 :
-    displacementMotionSolver(mesh, dict, typeName),
+    displacementMotionSolver(withPointDisplacement(mesh), dict, typeName),
     inNewPoints_(false),
     nReusedPoints_(0),
     meshMB_(debug ? dcpRBFResidentMemory::residentMB() : -1),
-    storedReported_(std::size_t(-1))
+    storedReported_(std::size_t(-1)),
+    coeffsAtStart_(coeffDict())
 {
     construct();
 }
@@ -172,7 +173,8 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
     inNewPoints_(false),
     nReusedPoints_(0),
     meshMB_(debug ? dcpRBFResidentMemory::residentMB() : -1),
-    storedReported_(std::size_t(-1))
+    storedReported_(std::size_t(-1)),
+    coeffsAtStart_(coeffDict())
 {
     construct();
 }
@@ -359,6 +361,29 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
     timer_->split(&dcpRBFStepTimer::times::points);
     writeLog();
     return tpoints;
+}
+
+
+bool Foam::dcpRBFMotionSolver::read()
+{
+    if (!displacementMotionSolver::read())
+    {
+        return false;
+    }
+    const string changes
+    (
+        dcpRBFSettings::changedEntries(coeffsAtStart_, coeffDict())
+    );
+    if (changes.size())
+    {
+        WarningInFunction
+            << typeName << "Coeffs changed while running (" << changes.c_str()
+            << "): dcpRBF reads its settings when the run starts, and this"
+            << " run goes on with those. To use the new ones, stop the run and"
+            << " restart it from a written time (the control set is then"
+            << " selected anew where they change it)." << endl;
+    }
+    return true;
 }
 
 

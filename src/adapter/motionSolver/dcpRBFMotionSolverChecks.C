@@ -6,16 +6,52 @@ License
     GPL-3.0-or-later: see the LICENSE file at the top of the repository.
 -------------------------------------------------------------------------------
 Description
-    dcpRBFMotionSolver, continued: the checks at construction (the set's
-    size, the radius's reach) and the threads.
+    dcpRBFMotionSolver, continued: the checks at construction (the point
+    displacement field, the set's size, the radius's reach) and the threads.
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFMotionSolver.H"
 #include "dcpRBFThreads.H"
 #include "OSspecific.H"
 #include "SimdWidth.hpp"
+#include "pointFields.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+const Foam::polyMesh& Foam::dcpRBFMotionSolver::withPointDisplacement
+(
+    const polyMesh& mesh
+)
+{
+    const auto has = [&](const word& name)
+    {
+        return IOobject
+        (
+            name, mesh.time().timeName(), mesh, IOobject::MUST_READ
+        ).typeHeaderOk<pointVectorField>(false);
+    };
+    if (!has("pointDisplacement"))
+    {
+        FatalErrorInFunction
+            << typeName << " reads the boundary's motion from the point"
+            << " displacement field pointDisplacement (a pointVectorField:"
+            << " fixedValue, angularOscillatingDisplacement,"
+            << " solidBodyMotionDisplacement, ... on the moving patches),"
+            << " and there is none in " << mesh.time().timeName() << "/.";
+        if (has("pointMotionU"))
+        {
+            FatalError
+                << " There is a pointMotionU, a point velocity, which"
+                << " velocity-based solvers (velocityLaplacian, ...) read:"
+                << " write a pointDisplacement with the displacement"
+                << " conditions of the same motion (oscillatingVelocity:"
+                << " oscillatingDisplacement, same amplitude and omega).";
+        }
+        FatalError << exit(FatalError);
+    }
+    return mesh;
+}
+
 
 void Foam::dcpRBFMotionSolver::checkSetSize() const
 {

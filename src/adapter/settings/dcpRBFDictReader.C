@@ -60,7 +60,7 @@ const Foam::token* Foam::dcpRBFDictReader::single
     {
         FatalIOErrorInFunction(dict_)
             << "Keyword " << keyword << " must be " << expected.c_str()
-            << "; got " << is->size() << " tokens: " << *is
+            << "; got " << is->size() << " tokens: " << asWritten(*is).c_str()
             << exit(FatalIOError);
     }
     return &(*is)[0];
@@ -292,7 +292,7 @@ Foam::wordRes Foam::dcpRBFDictReader::getWordRes
     {
         FatalIOErrorInFunction(dict_)
             << "Keyword " << keyword << " must be " << expected.c_str()
-            << "; got " << *is << exit(FatalIOError);
+            << "; got " << asWritten(*is).c_str() << exit(FatalIOError);
     }
     is->rewind();
     const wordRes matchers(*is);
@@ -319,13 +319,28 @@ Foam::point Foam::dcpRBFDictReader::getPoint(const word& keyword) const
     }
     if (!ok)
     {
-        OStringStream got;
-        if (is) got << *is; else got << "nothing";
         FatalIOErrorInFunction(dict_)
             << "Keyword " << keyword << " must be " << expected.c_str()
-            << "; got " << got.str().c_str() << exit(FatalIOError);
+            << "; got " << (is ? asWritten(*is) : string("nothing")).c_str()
+            << exit(FatalIOError);
     }
     return point((*is)[1].number(), (*is)[2].number(), (*is)[3].number());
+}
+
+
+Foam::string Foam::dcpRBFDictReader::asWritten
+(
+    const ITstream& is,
+    const int digits
+)
+{
+    OStringStream os;
+    os.precision(digits);
+    forAll(is, i)
+    {
+        os << (i ? " " : "") << is[i];
+    }
+    return os.str();
 }
 
 

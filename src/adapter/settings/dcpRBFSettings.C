@@ -15,6 +15,11 @@ License
 #include "processorCyclicPolyPatch.H"
 #include "cyclicAMIPolyPatch.H"
 #include "wordRes.H"
+#include "OStringStream.H"
+
+#include <cctype>
+#include <functional>
+#include <limits>
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
 
@@ -61,9 +66,15 @@ const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
         string near;
         for (const entry& e : dict)
         {
+            // (in any case: dcpRbfCoeffs, DCPRBFCoeffs, ...)
+            std::string lower(e.keyword());
+            for (char& c : lower)
+            {
+                c = char(std::tolower(static_cast<unsigned char>(c)));
+            }
             if
             (
-                e.isDict() && e.keyword().starts_with("dcpRBF")
+                e.isDict() && lower.compare(0, 6, "dcprbf") == 0
              && e.keyword() != "dcpRBFFvMeshCoeffs"
             )
             {
@@ -202,12 +213,21 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
     const pointField& points0
 ) const
 {
+    if (!dict.found("supportRadius", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword supportRadius missing: a length [m], e.g."
+            << " supportRadius 2.5; or a factor of the moving patches'"
+            << " extent, e.g. supportRadius 5 movingExtent;"
+            << exit(FatalIOError);
+    }
     ITstream& is = dict.lookup("supportRadius");
     if (is.empty() || !is[0].isNumber())
     {
         FatalIOErrorInFunction(dict)
             << "Keyword supportRadius must be a length [m] or \"factor"
-            << " movingExtent\"; got " << is << exit(FatalIOError);
+            << " movingExtent\"; got " << dcpRBFDictReader::asWritten(is).c_str()
+            << exit(FatalIOError);
     }
     const scalar factor(readScalar(is));
     scalar radius = factor;
@@ -273,6 +293,76 @@ dcprbf::RadialKernel Foam::dcpRBFSettings::readKernel
     );
     const word name(k.choiceList()[r.getChoice(k)]);
     return dcprbf::RadialKernel::fromName(name, readRadius(r.dict(), mesh, points0));
+}
+
+
+Foam::string Foam::dcpRBFSettings::changedEntries
+(
+    const dictionary& before,
+    const dictionary& now
+)
+{
+    // an entry on one line: its tokens, a sub-dictionary's entries in
+    // braces; numbers to digits significant digits
+    const std::function<string(const entry*, int)> text =
+        [&](const entry* e, const int digits)
+    {
+        if (!e)
+        {
+            return string("(none)");
+        }
+        OStringStream os;
+        os.precision(digits);
+        if (e->isDict())
+        {
+            os << '{';
+            for (const entry& sub : e->dict())
+            {
+                os << ' ' << sub.keyword() << ' ' << text(&sub, digits).c_str()
+                   << (sub.isDict() ? "" : ";");
+            }
+            os << " }";
+        }
+        else
+        {
+            os << dcpRBFDictReader::asWritten(e->stream(), digits).c_str();
+        }
+        return string(os.str());
+    };
+    // compared at full precision, shown as a user writes them
+    const int all = std::numeric_limits<double>::max_digits10;
+    const int shown = 10;
+    string changes;
+    const auto add = [&](const string& key, const entry* was, const entry* is)
+    {
+        changes += (changes.empty() ? "" : ", ") + key + ' '
+            + text(was, shown) + " -> " + text(is, shown);
+    };
+    const std::function<void(const dictionary&, const dictionary&, const string&)>
+    compare = [&](const dictionary& a, const dictionary& b, const string& prefix)
+    {
+        for (const entry& e : b)
+        {
+            const entry* was = a.findEntry(e.keyword(), keyType::LITERAL);
+            if (was && was->isDict() && e.isDict())
+            {
+                compare(was->dict(), e.dict(), prefix + e.keyword() + '/');
+            }
+            else if (text(was, all) != text(&e, all))
+            {
+                add(prefix + e.keyword(), was, &e);
+            }
+        }
+        for (const entry& e : a)
+        {
+            if (!b.findEntry(e.keyword(), keyType::LITERAL))
+            {
+                add(prefix + e.keyword(), &e, nullptr);
+            }
+        }
+    };
+    compare(before, now, string());
+    return changes;
 }
 
 
