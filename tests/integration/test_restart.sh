@@ -209,6 +209,22 @@ test_restart_otherSelection_selectsAnewSaysSo() {
     ! grep -q "restarting with" log.moveDynamicMesh.1 || fail "the old control set was read"
 }
 
+# A restart from a time without its dcpRBFState (a time copied without its
+# uniform folder): selected anew, saying so (a new user's restart differed
+# from the uninterrupted run by 4e-4 of the domain without a word)
+test_restart_withoutState_saysSo() {
+    modeRun2D "selection greedy; tolerance 1e-2;"
+    foamDictionary system/controlDict -entry endTime -set 0.5 > /dev/null
+    run moveDynamicMesh || return 1
+    rm 0.5/uniform/dcpRBFState || fail "no restart state at t = 0.5" || return 1
+    foamDictionary system/controlDict -entry endTime -set 1 > /dev/null
+    run moveDynamicMesh || return 1
+    warningText "No control-point state" 2 "no warning of the missing state" log.moveDynamicMesh.1
+    grep -q "selected anew" warning || fail "the warning does not say what happens: $(head -c 400 warning)"
+    ! grep -q "No control-point state" log.moveDynamicMesh \
+        || fail "a warning at the start of a run from time 0"
+}
+
 test_restart_otherMaxPoints_selectsAnewSaysSo() {
     modeRun2D "selection greedy; tolerance 1e-6;"
     restartWith "$(airfoilCoeffs "selection greedy; tolerance 1e-6; maxPoints 12;")"

@@ -125,7 +125,23 @@ void Foam::dcpRBFControlPoints::storeState(dictionary& state) const
 
 bool Foam::dcpRBFControlPoints::readState()
 {
-    if (!state_.found("indices") || !state_.get<bool>("ready"))
+    if (!state_.found("indices"))
+    {
+        if (state_.time().value() != 0)
+        {
+            WarningInFunction
+                << "No control-point state " << state_.objectPath() << ": the"
+                << " control set is selected anew at the first step with"
+                << " motion and the error-guided trials' schedule starts"
+                << " over. If this run continues one that moved the mesh, it"
+                << " does not continue it exactly: restart from a time written"
+                << " with its uniform/dcpRBFState (decomposePar and"
+                << " reconstructPar carry it with the time's uniform folder)"
+                << endl;
+        }
+        return false;
+    }
+    if (!state_.get<bool>("ready"))
     {
         return false;
     }
