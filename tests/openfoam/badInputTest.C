@@ -322,10 +322,13 @@ TEST(BadInput, EditWhileRunningIsNamed)
             "dynamicFvMesh dynamicMotionSolverFvMesh;\nmotionSolver dcpRBF;\n"
             "dcpRBFCoeffs\n{\n" + now + "\n}\n"
         );
+        // (warnings go to stdout in v1912, to stderr in newer versions)
         std::ostringstream out;
-        std::streambuf* const was = std::cout.rdbuf(out.rdbuf());
+        std::streambuf* const wasOut = std::cout.rdbuf(out.rdbuf());
+        std::streambuf* const wasErr = std::cerr.rdbuf(out.rdbuf());
         const bool ok = ms->read();
-        std::cout.rdbuf(was);
+        std::cout.rdbuf(wasOut);
+        std::cerr.rdbuf(wasErr);
         EXPECT_TRUE(ok);
         return out.str();
     };
