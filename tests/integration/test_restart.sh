@@ -223,6 +223,13 @@ test_restart_withoutState_saysSo() {
     grep -q "selected anew" warning || fail "the warning does not say what happens: $(head -c 400 warning)"
     ! grep -q "No control-point state" log.moveDynamicMesh \
         || fail "a warning at the start of a run from time 0"
+    # selection all: the set is every candidate, nothing lost, no warning
+    rm 1/uniform/dcpRBFState || fail "no restart state at t = 1" || return 1
+    dynamicMeshDict "$(airfoilCoeffs "selection all;")"
+    foamDictionary system/controlDict -entry endTime -set 1.2 > /dev/null
+    run moveDynamicMesh || return 1
+    ! grep -q "No control-point state" log.moveDynamicMesh.2 \
+        || fail "a warning with selection all, where nothing is lost"
 }
 
 test_restart_otherMaxPoints_selectsAnewSaysSo() {

@@ -164,15 +164,21 @@ Foam::globalIndex Foam::dcpRBFBoundaryPoints::holders() const
 }
 
 
-Foam::labelList Foam::dcpRBFBoundaryPoints::firstHolders() const
+Foam::labelList Foam::dcpRBFBoundaryPoints::holderOf() const
 {
-    // (concatToGlobal_ is in holders()'s numbering: the first k wins)
-    labelList first(size(), -1);
+    // (concatToGlobal_ is in holders()'s numbering: the first k wins, then
+    // this processor's own)
+    labelList holder(size(), -1);
     forAll(concatToGlobal_, k)
     {
-        if (first[concatToGlobal_[k]] < 0) first[concatToGlobal_[k]] = k;
+        if (holder[concatToGlobal_[k]] < 0) holder[concatToGlobal_[k]] = k;
     }
-    return first;
+    const label own = holders().offset(Pstream::myProcNo());
+    forAll(localPoints_, i)
+    {
+        holder[concatToGlobal_[own + i]] = own + i;
+    }
+    return holder;
 }
 
 

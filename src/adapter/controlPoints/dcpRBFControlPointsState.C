@@ -127,7 +127,12 @@ bool Foam::dcpRBFControlPoints::readState()
 {
     if (!state_.found("indices"))
     {
-        if (state_.time().value() != 0)
+        // (selection all: the set is every candidate, nothing is lost)
+        if
+        (
+            state_.time().value() != 0
+         && settings_.selection().selection != dcpRBFSelectionSettings::mode::all
+        )
         {
             WarningInFunction
                 << "No control-point state " << state_.objectPath() << ": the"

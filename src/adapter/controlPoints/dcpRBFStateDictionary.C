@@ -59,10 +59,17 @@ bool Foam::dcpRBFStateDictionary::writeData(Ostream& os) const
     // continues exactly (the entries are made as text at the default
     // precision, then written at the stream's)
     const int digits = std::numeric_limits<double>::max_digits10;
-    const unsigned defaultDigits = IOstream::defaultPrecision(digits);
     dictionary state(*this);
-    fill_(state);
-    IOstream::defaultPrecision(defaultDigits);
+    {
+        // the default back however fill_ ends (FatalError may throw)
+        struct scope
+        {
+            const unsigned was;
+            explicit scope(const unsigned d) : was(IOstream::defaultPrecision(d)) {}
+            ~scope() { IOstream::defaultPrecision(was); }
+        } fullDefault(digits);
+        fill_(state);
+    }
     const int osDigits = os.precision(digits);
     state.write(os, false);
     os.precision(osDigits);

@@ -84,7 +84,7 @@ Foam::dcpRBFBoundaryCorrection::dcpRBFBoundaryCorrection
         evalPoints, targets.points(), corrected, maxRadius, targetRadius
     )
 {
-    fetchFrom(targets.holders(), targets.firstHolders());
+    fetchFrom(targets.holders(), targets.holderOf());
 }
 
 

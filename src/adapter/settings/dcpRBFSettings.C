@@ -75,7 +75,7 @@ const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
             if
             (
                 e.isDict() && lower.compare(0, 6, "dcprbf") == 0
-             && e.keyword() != "dcpRBFFvMeshCoeffs"
+             && lower != "dcprbffvmeshcoeffs"
             )
             {
                 near = " (found " + e.keyword() + ": the name is dcpRBFCoeffs)";
@@ -213,7 +213,7 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
     const pointField& points0
 ) const
 {
-    if (!dict.found("supportRadius", keyType::LITERAL))
+    if (!dict.found("supportRadius"))
     {
         FatalIOErrorInFunction(dict)
             << "Keyword supportRadius missing: a length [m], e.g."
