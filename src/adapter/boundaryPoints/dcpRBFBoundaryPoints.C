@@ -173,10 +173,11 @@ Foam::labelList Foam::dcpRBFBoundaryPoints::holderOf() const
     {
         if (holder[concatToGlobal_[k]] < 0) holder[concatToGlobal_[k]] = k;
     }
-    const label own = holders().offset(Pstream::myProcNo());
+    const globalIndex numbering(holders());
     forAll(localPoints_, i)
     {
-        holder[concatToGlobal_[own + i]] = own + i;
+        const label k = numbering.toGlobal(i);
+        holder[concatToGlobal_[k]] = k;
     }
     return holder;
 }
