@@ -39,10 +39,9 @@ std::vector<char> removableFlags(const Foam::boolList& moving)
 dcprbf::DynamicControlSet::Options setOptions(const Foam::dcpRBFSelectionSettings& s)
 {
     dcprbf::DynamicControlSet::Options o;
-    o.minPoints = s.selection == Foam::dcpRBFSelectionSettings::mode::all ? 0 : s.minPoints;
+    o.minPoints = s.everyCandidate() ? 0 : s.minPoints;
     o.maxPoints =
-        s.selection == Foam::dcpRBFSelectionSettings::mode::all
-      ? std::numeric_limits<Eigen::Index>::max() : s.maxPoints;
+        s.everyCandidate() ? std::numeric_limits<Eigen::Index>::max() : s.maxPoints;
     o.protectSteps = s.protectSteps;
     return o;
 }
@@ -123,50 +122,38 @@ void Foam::dcpRBFControlPoints::greedy(const dcprbf::Values& d)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::dcpRBFControlPoints::dcpRBFControlPoints
-(
-    const polyMesh& mesh,
-    const dcpRBFSettings& settings,
-    const dcpRBFBoundaryPoints& boundary,
-    const label dim
-)
+Foam::dcpRBFControlPoints::dcpRBFControlPoints(const dcpRBFContext& context)
 :
-    settings_(settings),
-    boundary_(boundary),
-    dim_(dim),
+    settings_(context.settings()),
+    boundary_(context.boundaryPoints()),
+    dim_(context.dim()),
     set_
     (
-        boundary.points(),
-        removableFlags(boundary.moving()),
-        settings.kernel(),
-        settings.polynomial(),
-        dim,
-        setOptions(settings.selection())
+        boundary_.points(),
+        removableFlags(boundary_.moving()),
+        settings_.kernel(),
+        settings_.polynomial(),
+        dim_,
+        setOptions(settings_.selection())
     ),
-    time_(mesh.time()),
+    time_(context.time()),
     ready_(false),
+    restored_(false),
     updated_(false),
     warnedMaxPoints_(false),
-    trials_(set_),
-    blend_(settings.selection().swapBlendSteps),
-    schedule_
-    (
-        settings.selection().trialBackoff,
-        dcpRBFSelectionSettings::maxTrialWait,
-        settings.selection().trialQualityDrop
-    ),
-    selectedWith_(selectedWith(mesh, settings, boundary.size())),
+    blend_(nullptr),
+    selectedWith_(selectedWith(context.mesh(), settings_, boundary_.size())),
     state_
     (
-        "dcpRBFState", mesh,
+        "dcpRBFState", context.mesh(),
         [this](dictionary& state) { storeState(state); }
     ),
-    block_(boundary, settings.kernel(), set_.evaluator().polynomial())
+    block_(boundary_, settings_.kernel(), set_.evaluator().polynomial())
 {
     try
     {
-        ready_ = readState();
-        if (!ready_ && settings_.selection().selection == dcpRBFSelectionSettings::mode::all)
+        ready_ = restored_ = readState();
+        if (!ready_ && settings_.selection().everyCandidate())
         {
             std::vector<Eigen::Index> all(boundary_.size());
             std::iota(all.begin(), all.end(), 0);
@@ -215,9 +202,9 @@ void Foam::dcpRBFControlPoints::solve(const dcprbf::Values& d)
 {
     try
     {
-        if (blend_.active())
+        if (blend_ && blend_->active())
         {
-            set_.solveBlended(d, blend_.from(), blend_.weight());
+            set_.solveBlended(d, blend_->from(), blend_->weight());
         }
         else
         {
@@ -259,7 +246,7 @@ Foam::label Foam::dcpRBFControlPoints::reselect
 )
 {
     atMaxPoints = false;
-    if (settings_.selection().selection == dcpRBFSelectionSettings::mode::all)
+    if (settings_.selection().everyCandidate())
     {
         return 0;
     }
@@ -330,7 +317,7 @@ std::size_t Foam::dcpRBFControlPoints::storageBudget() const
 }
 
 
-void Foam::dcpRBFControlPoints::endStep(const scalar minQuality)
+void Foam::dcpRBFControlPoints::endStep()
 {
     {
         // settled: at most a patch's centres in or out since the last step
@@ -347,16 +334,8 @@ void Foam::dcpRBFControlPoints::endStep(const scalar minQuality)
          && changed.size() <= std::size_t(2*dcprbf::StoredEvaluation::maxPatchColumns);
         lastIndices_ = std::move(now);
     }
-    if (trials_.started())
-    {
-        // this step's swaps were kept
-        schedule_.kept();
-        trials_.confirm();
-    }
     set_.nextStep();
-    schedule_.endStep(minQuality);
-    blend_.advance();
-    if (time_.writeTime())
+    if (time_.writeTime() && updated_)
     {
         // refactorized from the indices, as a restart does (restarts are
         // exact); where a fresh factorization fails to round-off (a set
@@ -365,12 +344,8 @@ void Foam::dcpRBFControlPoints::endStep(const scalar minQuality)
         // meets the same refusal and says so
         try
         {
-            if (updated_)
-            {
-                set_.refactorize();
-                updated_ = false;
-            }
-            blend_.refresh(set_);
+            set_.refactorize();
+            updated_ = false;
         }
         catch (const dcprbf::Error& e)
         {

@@ -11,9 +11,6 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFControlPoints.H"
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
 Foam::string Foam::dcpRBFControlPoints::whatToDo(const dcprbf::Error& e) const
 {
     const std::string what(e.what());

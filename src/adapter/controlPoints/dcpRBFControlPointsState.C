@@ -39,7 +39,6 @@ Foam::dictionary Foam::dcpRBFControlPoints::selectedWith
         }
         return "(" + s + ")";
     };
-    const dcpRBFSelectionSettings& sel = settings.selection();
     dictionary d;
     // as strings: written quoted, read back as written
     const auto put = [&](const word& key, const std::string& value)
@@ -52,15 +51,7 @@ Foam::dictionary Foam::dcpRBFControlPoints::selectedWith
     put("function", settings.kernel().name());
     put("supportRadius", Foam::name(settings.kernel().radius()));
     put("polynomial", Switch(settings.polynomial()).c_str());
-    put("selection", dcpRBFSelectionSettings::modeNames[sel.selection]);
-    if (sel.selection != dcpRBFSelectionSettings::mode::all)
-    {
-        put("tolerance", Foam::name(sel.tolerance));
-        put("minPoints", Foam::name(sel.minPoints));
-        put("maxPoints", Foam::name(sel.maxPoints));
-        put("doubleEdged", Switch(sel.doubleEdged).c_str());
-        put("selectOn", dcpRBFSelectionSettings::targetNames[sel.selectOn]);
-    }
+    settings.selection().setDependsOn(d);
     return d;
 }
 
@@ -116,10 +107,8 @@ void Foam::dcpRBFControlPoints::storeState(dictionary& state) const
 {
     state.set("selectedWith", selectedWith_);
     state.set("ready", ready_);
-    schedule_.write(state);
     state.set("indices", dcpRBFCompat::makeList<label>(set_.indices()));
     state.set("ages", dcpRBFCompat::makeList<label>(set_.ages()));
-    blend_.write(state);
 }
 
 
@@ -131,14 +120,13 @@ bool Foam::dcpRBFControlPoints::readState()
         if
         (
             state_.time().value() != 0
-         && settings_.selection().selection != dcpRBFSelectionSettings::mode::all
+         && !settings_.selection().everyCandidate()
         )
         {
             WarningInFunction
                 << "No control-point state " << state_.objectPath() << ": the"
                 << " control set is selected anew at the first step with"
-                << " motion and the error-guided trials' schedule starts"
-                << " over. If this run continues one that moved the mesh, it"
+                << " motion and the swap rule's state starts over. If this run continues one that moved the mesh, it"
                 << " does not continue it exactly: restart from a time written"
                 << " with its uniform/dcpRBFState (decomposePar and"
                 << " reconstructPar carry it with the time's uniform folder)"
@@ -157,8 +145,8 @@ bool Foam::dcpRBFControlPoints::readState()
             << "The restart state " << state_.objectPath() << " was selected"
             << " with other settings: " << changes.c_str() << "." << nl
             << "    The control set is selected anew (at the first step with"
-            << " motion, as at the start of a run) and the error-guided"
-            << " trials' schedule starts over: the run does not continue"
+            << " motion, as at the start of a run) and the swap rule's"
+            << " state starts over: the run does not continue"
             << " the one that wrote the state exactly. To continue it"
             << " exactly, restart with the settings it was written with."
             << endl;
@@ -168,8 +156,6 @@ bool Foam::dcpRBFControlPoints::readState()
     const labelList ages(state_.get<labelList>("ages"));
     set_.reset(std::vector<Eigen::Index>(indices.begin(), indices.end()));
     set_.setAges(std::vector<int>(ages.begin(), ages.end()));
-    schedule_.read(state_);
-    blend_.read(state_, set_);
     Info<< "dcpRBF: restarting with " << set_.size() << " control points from "
         << state_.objectPath() << endl;
     return true;

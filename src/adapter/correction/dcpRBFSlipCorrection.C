@@ -45,78 +45,113 @@ Foam::dcpRBFSlipCorrection::dcpRBFSlipCorrection
     }
     forAll(walls, wi)
     {
-        const labelList& patchIDs = walls.patches(wi);
         // the wall's points as the "moving" points of a set of their own
         // (the same patches on every processor: the same sets)
         autoPtr<dcpRBFBoundaryPoints> points
         (
             new dcpRBFBoundaryPoints
             (
-                mesh, projection, patchIDs, labelList(), points0
+                mesh, projection, walls.patches(wi), labelList(), points0
             )
         );
         if (points->size() == 0)
         {
             continue;
         }
-        // corrected: the points on no moving or static patch and not on
-        // this one
-        boolList corrected(mesh.nPoints());
-        forAll(corrected, pointi)
-        {
-            const bool onThis =
-                points->kind(pointi) != dcpRBFBoundaryPoints::interiorPoint;
-            corrected[pointi] =
-                boundary.kind(pointi) == dcpRBFBoundaryPoints::interiorPoint
-             && !onThis;
-        }
-        // each point's blend stays clear of the moving patches (they are
-        // exact): within half its distance to the nearest moving point
-        const dcprbf::Points& x = points->points();
-        scalarField radius(x.rows(), maxRadius);
-        if (movingTree.valid())
-        {
-            for (Eigen::Index i = 0; i < x.rows(); ++i)
-            {
-                double d2 = 0;
-                movingTree->nearest(x.row(i).data(), d2);
-                radius[i] = min(maxRadius, 0.5*std::sqrt(d2));
-            }
-        }
         wall* w = new wall;
         w->blend.reset
         (
             new dcpRBFBoundaryCorrection
             (
-                evalPoints, *points, corrected, maxRadius, radius
+                evalPoints, *points, corrected(*points), maxRadius,
+                blendRadii(points->points(), movingTree.get(), maxRadius)
             )
         );
-        w->patches = patchIDs;
-        w->members.setSize(patchIDs.size());
-        forAll(patchIDs, k)
-        {
-            const Map<label>& onPatch = mesh.boundaryMesh()[patchIDs[k]].meshPointMap();
-            DynamicList<label> members;
-            forAll(points->localPoints(), i)
-            {
-                if (onPatch.found(points->localPoints()[i])) members.append(i);
-            }
-            w->members[k].transfer(members);
-            wallOf_[patchIDs[k]] = walls_.size();
-            placeOf_[patchIDs[k]] = k;
-        }
-        DynamicList<label> seams;
-        forAll(points->localPoints(), i)
-        {
-            if (walls.onSeam(wi, points->localPoints()[i])) seams.append(i);
-        }
-        w->seams.transfer(seams);
-        w->seamBefore.setSize(w->seams.size(), Zero);
-        w->before.setSize(points->localPoints().size(), Zero);
-        w->change.setSize(points->localPoints().size(), Zero);
         w->points = std::move(points);
+        index(*w, walls, wi);
         walls_.append(w);
     }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::boolList Foam::dcpRBFSlipCorrection::corrected
+(
+    const dcpRBFBoundaryPoints& wallPoints
+) const
+{
+    // the points on no moving or static patch and not on this wall
+    boolList corrected(mesh_.nPoints());
+    forAll(corrected, pointi)
+    {
+        const bool onThis =
+            wallPoints.kind(pointi) != dcpRBFBoundaryPoints::interiorPoint;
+        corrected[pointi] =
+            boundary_.kind(pointi) == dcpRBFBoundaryPoints::interiorPoint
+         && !onThis;
+    }
+    return corrected;
+}
+
+
+Foam::scalarField Foam::dcpRBFSlipCorrection::blendRadii
+(
+    const dcprbf::Points& x,
+    const dcprbf::PointTree* movingTree,
+    const scalar maxRadius
+)
+{
+    // each point's blend stays clear of the moving patches (they are
+    // exact): within half its distance to the nearest moving point
+    scalarField radius(x.rows(), maxRadius);
+    if (movingTree)
+    {
+        for (Eigen::Index i = 0; i < x.rows(); ++i)
+        {
+            double d2 = 0;
+            movingTree->nearest(x.row(i).data(), d2);
+            radius[i] = min(maxRadius, 0.5*std::sqrt(d2));
+        }
+    }
+    return radius;
+}
+
+
+void Foam::dcpRBFSlipCorrection::index
+(
+    wall& w,
+    const dcpRBFSlidingWalls& walls,
+    const label wi
+)
+{
+    // each patch's points among the wall's, the seams; the patches' wall
+    // and place (the wall is the next of walls_)
+    const labelList& patchIDs = walls.patches(wi);
+    const labelList& localPoints = w.points->localPoints();
+    w.patches = patchIDs;
+    w.members.setSize(patchIDs.size());
+    forAll(patchIDs, k)
+    {
+        const Map<label>& onPatch = mesh_.boundaryMesh()[patchIDs[k]].meshPointMap();
+        DynamicList<label> members;
+        forAll(localPoints, i)
+        {
+            if (onPatch.found(localPoints[i])) members.append(i);
+        }
+        w.members[k].transfer(members);
+        wallOf_[patchIDs[k]] = walls_.size();
+        placeOf_[patchIDs[k]] = k;
+    }
+    DynamicList<label> seams;
+    forAll(localPoints, i)
+    {
+        if (walls.onSeam(wi, localPoints[i])) seams.append(i);
+    }
+    w.seams.transfer(seams);
+    w.seamBefore.setSize(w.seams.size(), Zero);
+    w.before.setSize(localPoints.size(), Zero);
+    w.change.setSize(localPoints.size(), Zero);
 }
 
 

@@ -15,38 +15,29 @@ License
 
 Foam::dcpRBFInterpolation::dcpRBFInterpolation
 (
-    const dcpRBFSettings& settings,
-    const dcpRBFPlaneProjection& projection,
-    const dcpRBFBoundaryPoints& boundaryPoints,
-    const dcprbf::Points& evalPoints,
-    const dcprbf::DistinctRows& distinct,
+    const dcpRBFContext& context,
     const dcpRBFControlPoints& controlPoints,
     const dcpRBFRotation& rotation,
-    const dcpRBFTwoDPoints& twoDPoints,
-    dcpRBFPrescribedDisplacement& prescribed,
-    pointVectorField& pointDisplacement,
-    const pointField& points0
+    dcpRBFPrescribedDisplacement& prescribed
 )
 :
-    settings_(settings),
-    projection_(projection),
-    boundaryPoints_(boundaryPoints),
-    distinct_(distinct),
+    settings_(context.settings()),
+    projection_(context.projection()),
+    boundaryPoints_(context.boundaryPoints()),
+    distinct_(context.distinct()),
     controlPoints_(controlPoints),
     rotation_(rotation),
-    twoDPoints_(twoDPoints),
     prescribed_(prescribed),
-    pointDisplacement_(pointDisplacement),
-    points0_(points0),
+    pointDisplacement_(context.pointDisplacement()),
     stored_
     (
-        settings.kernel(), controlPoints.evaluator().polynomial(),
-        distinct.points()
+        settings_.kernel(), controlPoints.evaluator().polynomial(),
+        distinct_.points()
     ),
     correction_
     (
-        evalPoints, boundaryPoints, controlPoints.block().blocks(),
-        settings.kernel().radius()
+        context.evalPoints(), boundaryPoints_, controlPoints.block().blocks(),
+        settings_.kernel().radius()
     )
 {
     // Each distinct reference point's interior points
@@ -227,6 +218,67 @@ void Foam::dcpRBFInterpolation::rigid()
           : prescribed_.values()[pointi];
     }
     prescribed_.constrainInterpolated();
+}
+
+
+bool Foam::dcpRBFInterpolation::evaluateRows
+(
+    const std::vector<int>& rows,
+    vectorField& field,
+    dcprbf::Values& scratch
+)
+{
+    // the set's values at those rows as the stored matrix would give them
+    // (without a patch over every point if the current matrix serves the
+    // set with a few columns more), else the set's matrix prepared, else
+    // (not stored) as the evaluation on the fly of every point would
+    const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
+    const std::size_t budget = controlPoints_.storageBudget();
+    const label dim = projection_.dim();
+    double* out = &field[0][0];
+    if
+    (
+        stored_.evaluateRowsFor
+        (
+            s.centres(), budget, s.weights(), s.polynomialCoeffs(),
+            interiorTargets_, dim, out, rows
+        )
+    )
+    {
+        return true;
+    }
+    if (stored_.prepare(s.centres(), budget))
+    {
+        return stored_.evaluateInto
+        (
+            s.weights(), s.polynomialCoeffs(), interiorTargets_, dim, out,
+            &rows
+        );
+    }
+    // to the rows' points as the stored product writes them
+    const dcprbf::Points& x = distinct_.points();
+    scratch.resize(rows.size(), 3);
+    s.evaluateRows(x.data(), x.rows(), rows, scratch.data());
+    for (std::size_t k = 0; k < rows.size(); ++k)
+    {
+        interiorTargets_.write(rows[k], scratch.row(k).data(), dim, out);
+    }
+    return true;
+}
+
+
+Foam::scalar Foam::dcpRBFInterpolation::correct
+(
+    const dcprbf::Values& d,
+    vectorField& field
+)
+{
+    // (exchanged, not copied)
+    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    disp.swap(field);
+    const scalar error = correct(d);
+    disp.swap(field);
+    return error;
 }
 
 

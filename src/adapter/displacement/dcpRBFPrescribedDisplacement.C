@@ -18,26 +18,20 @@ License
 
 Foam::dcpRBFPrescribedDisplacement::dcpRBFPrescribedDisplacement
 (
-    const polyMesh& mesh,
-    const dcpRBFSettings& settings,
-    const dcpRBFPlaneProjection& projection,
-    const dcpRBFBoundaryPoints& boundaryPoints,
-    pointVectorField& pointDisplacement,
-    const pointField& points0,
-    const dcprbf::Points& evalPoints
+    const dcpRBFContext& context
 )
 :
-    mesh_(mesh),
-    settings_(settings),
-    projection_(projection),
-    boundaryPoints_(boundaryPoints),
-    pointDisplacement_(pointDisplacement),
-    slipPatches_(pointDisplacement, points0),
+    mesh_(context.mesh()),
+    settings_(context.settings()),
+    projection_(context.projection()),
+    boundaryPoints_(context.boundaryPoints()),
+    pointDisplacement_(context.pointDisplacement()),
+    slipPatches_(pointDisplacement_, context.points0()),
     slipCorrection_
     (
-        mesh, pointDisplacement, projection, boundaryPoints,
-        settings.movingPatchIDs(), settings.staticPatchIDs(), evalPoints,
-        points0, settings.kernel().radius()
+        mesh_, pointDisplacement_, projection_, boundaryPoints_,
+        settings_.movingPatchIDs(), settings_.staticPatchIDs(),
+        context.evalPoints(), context.points0(), settings_.kernel().radius()
     )
 {
     // The prescribed points, and those finish() can change (std::vector:

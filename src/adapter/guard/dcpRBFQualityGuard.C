@@ -12,21 +12,18 @@ License
 
 Foam::dcpRBFQualityGuard::dcpRBFQualityGuard
 (
-    const polyMesh& mesh,
-    const dcpRBFSettings& settings,
+    const dcpRBFContext& context,
     dcpRBFControlPoints& controlPoints,
     dcpRBFInterpolation& interpolation,
-    dcpRBFQualityMeasurement& quality,
-    const bool rotation,
-    const dcpRBFPrescribedDisplacement& prescribed
+    dcpRBFQualityMeasurement& quality
 )
 :
-    mesh_(mesh),
-    settings_(settings),
+    mesh_(context.mesh()),
+    settings_(context.settings()),
     controlPoints_(controlPoints),
     interpolation_(interpolation),
     quality_(quality),
-    warnings_(mesh, settings, controlPoints, rotation, prescribed)
+    warnings_(context, controlPoints, interpolation)
 {}
 
 

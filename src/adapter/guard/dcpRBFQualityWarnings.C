@@ -12,18 +12,16 @@ License
 
 Foam::dcpRBFQualityWarnings::dcpRBFQualityWarnings
 (
-    const polyMesh& mesh,
-    const dcpRBFSettings& settings,
+    const dcpRBFContext& context,
     const dcpRBFControlPoints& controlPoints,
-    const bool rotation,
-    const dcpRBFPrescribedDisplacement& prescribed
+    const dcpRBFInterpolation& interpolation
 )
 :
-    mesh_(mesh),
-    settings_(settings),
+    mesh_(context.mesh()),
+    settings_(context.settings()),
     controlPoints_(controlPoints),
-    rotation_(rotation),
-    prescribed_(prescribed),
+    rotation_(interpolation.rotation().active()),
+    prescribed_(interpolation.prescribed()),
     invertedSteps_(0),
     shortfallSteps_(0),
     lowQualityWarned_(false)
@@ -100,7 +98,8 @@ bool Foam::dcpRBFQualityWarnings::dynamicCouldHelp() const
     // greedy short of the boundary points (with all of them the
     // interpolation is exact there already: dynamic has fewer)
     return
-        settings_.selection().selection == dcpRBFSelectionSettings::mode::greedy
+        !settings_.selection().everyCandidate()
+     && !settings_.selection().swaps()
      && controlPoints_.size() < controlPoints_.candidates().rows();
 }
 

@@ -7,7 +7,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFMotionSolver.H"
-#include "dcpRBFResidentMemory.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -36,94 +35,43 @@ namespace Foam
 
 void Foam::dcpRBFMotionSolver::construct()
 {
-    const polyMesh& m = mesh();
-    const Time& runTime = m.time();
-    settings_.reset(new dcpRBFSettings(coeffDict(), m, points0()));
-    const dcpRBFSettings& s = *settings_;
-    projection_.reset(new dcpRBFPlaneProjection(m));
-    boundaryPoints_.reset
+    context_.reset
     (
-        new dcpRBFBoundaryPoints
+        new dcpRBFContext
         (
-            m, *projection_, s.movingPatchIDs(), s.staticPatchIDs(), points0()
+            mesh(), coeffDict(), pointDisplacement_, points0(), debug
         )
     );
-    evalPoints_.reset(new dcprbf::Points(projection_->toCore(points0())));
-    distinct_.reset(new dcprbf::DistinctRows(*evalPoints_));
-    controlPoints_.reset
-    (
-        new dcpRBFControlPoints(m, s, *boundaryPoints_, projection_->dim())
-    );
-    rotation_.reset
-    (
-        new dcpRBFRotation
-        (
-            m, coeffDict(), s, *boundaryPoints_, *projection_, *evalPoints_
-        )
-    );
-    region_.reset
-    (
-        new dcpRBFQualityRegion
-        (
-            m, *projection_, points0(), boundaryPoints_->movingPoints(),
-            dcpRBFQualityRegion::checkSources
-            (
-                m, *projection_, points0(), *boundaryPoints_
-            ),
-            s.kernel().radius(),
-            s.kernel().compact() && !rotation_->active(),
-            s.metric()
-        )
-    );
-    log_.reset(new dcpRBFStepLog(runTime));
+    const dcpRBFContext& c = *context_;
+    controlPoints_.reset(new dcpRBFControlPoints(c));
+    rotation_.reset(new dcpRBFRotation(c));
+    quality_.reset(new dcpRBFQualityMeasurement(c, rotation_->active()));
+    log_.reset(new dcpRBFStepLog(c.time()));
     writer_.reset
     (
-        new dcpRBFControlPointsWriter(runTime, *projection_, *boundaryPoints_)
-    );
-    twoDPoints_.reset(new dcpRBFTwoDPoints(m));
-    prescribed_.reset
-    (
-        new dcpRBFPrescribedDisplacement
+        new dcpRBFControlPointsWriter
         (
-            m, s, *projection_, *boundaryPoints_, pointDisplacement_,
-            points0(), *evalPoints_
+            c.time(), c.projection(), c.boundaryPoints()
         )
     );
+    prescribed_.reset(new dcpRBFPrescribedDisplacement(c));
     interpolation_.reset
     (
-        new dcpRBFInterpolation
-        (
-            s, *projection_, *boundaryPoints_, *evalPoints_, *distinct_,
-            *controlPoints_, *rotation_, *twoDPoints_, *prescribed_,
-            pointDisplacement_, points0()
-        )
-    );
-    quality_.reset
-    (
-        new dcpRBFQualityMeasurement
-        (
-            m, *region_, *twoDPoints_, pointDisplacement_, points0(),
-            s.selection().nSwap
-        )
+        new dcpRBFInterpolation(c, *controlPoints_, *rotation_, *prescribed_)
     );
     swapRule_ = dcpRBFSwapRule::New
     (
-        dcpRBFSelectionSettings::ruleNames[s.selection().swapRule],
-        m, s, *controlPoints_, *region_, *quality_, *interpolation_,
-        pointDisplacement_, points0()
+        c, *controlPoints_, *quality_, *interpolation_
     );
     guard_.reset
     (
-        new dcpRBFQualityGuard
-        (
-            m, s, *controlPoints_, *interpolation_, *quality_,
-            rotation_->active(), *prescribed_
-        )
+        new dcpRBFQualityGuard(c, *controlPoints_, *interpolation_, *quality_)
     );
 
-    if (s.scanLowest())
+    const dcpRBFQualityRegion& region = quality_->region();
+    if (c.settings().scanLowest())
     {
-        quality_->measureLowest(swapRule_->lowestCells(region_->nChecked()));
+        quality_->measureLowest(swapRule_->lowestCells(region.nChecked()));
     }
     quality_->rankBest(swapRule_->readsBestCells());
 
@@ -132,15 +80,15 @@ void Foam::dcpRBFMotionSolver::construct()
     checkSetSize();
     checkRegion();
 
-    Info<< typeName << ": " << boundaryPoints_->size() << " boundary points ("
+    const dcpRBFSettings& s = c.settings();
+    Info<< typeName << ": " << c.boundaryPoints().size() << " boundary points ("
         << word(s.kernel().name()) << ", supportRadius "
         << s.kernel().radius() << ", polynomial "
-        << Switch(s.polynomial()) << ", " << projection_->dim()
-        << "D, selection "
-        << dcpRBFSelectionSettings::modeNames[s.selection().selection]
-        << "), " << region_->size() << " cells in reach, "
-        << region_->nChecked() << " checked at every step (every cell whose"
-        << " points can move)" << endl;
+        << Switch(s.polynomial()) << ", " << c.dim()
+        << "D, selection " << s.selection().selectionName() << "), "
+        << region.size() << " cells in reach, " << region.nChecked()
+        << " checked at every step (every cell whose points can move)"
+        << endl;
 }
 
 
@@ -151,10 +99,9 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 )
 :
     displacementMotionSolver(withPointDisplacement(mesh), dict, typeName),
+    memory_(debug),
     inNewPoints_(false),
     nReusedPoints_(0),
-    meshMB_(debug ? dcpRBFResidentMemory::residentMB() : -1),
-    storedReported_(std::size_t(-1)),
     coeffsAtStart_(coeffDict())
 {
     construct();
@@ -170,10 +117,9 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 )
 :
     displacementMotionSolver(mesh, dict, pointDisplacement, points0, typeName),
+    memory_(debug),
     inNewPoints_(false),
     nReusedPoints_(0),
-    meshMB_(debug ? dcpRBFResidentMemory::residentMB() : -1),
-    storedReported_(std::size_t(-1)),
     coeffsAtStart_(coeffDict())
 {
     construct();
@@ -202,7 +148,10 @@ void Foam::dcpRBFMotionSolver::moveWithControlPoints
     timer_->split(&part::interpolate);
     if (debug)
     {
-        reportMemory();
+        memory_.report
+        (
+            interpolation_->storedBytes(), controlPoints_->block().storedBytes()
+        );
     }
 
     // Check: the new mesh's quality, unless the swap rule measures the
@@ -227,35 +176,12 @@ void Foam::dcpRBFMotionSolver::moveWithControlPoints
     timer_->split(&part::guard);
 
     step.nControl = controlPoints_->size();
-    controlPoints_->endStep(unguardedMin);
+    controlPoints_->endStep();
+    swapRule_->endStep(unguardedMin);
     if (mesh().time().writeTime())
     {
         writer_->write(controlPoints_->set(), d);
     }
-}
-
-
-void Foam::dcpRBFMotionSolver::reportMemory()
-{
-    const std::size_t bytes[2] =
-        {interpolation_->storedBytes(), controlPoints_->block().storedBytes()};
-    label changed = bytes[0] + bytes[1] != storedReported_;
-    reduce(changed, maxOp<label>());
-    if (!changed)
-    {
-        return;
-    }
-    storedReported_ = bytes[0] + bytes[1];
-    const scalar MB = 1024*1024;
-    scalar mesh = meshMB_;
-    scalar points = bytes[0]/MB;
-    scalar candidates = bytes[1]/MB;
-    reduce(mesh, maxOp<scalar>());
-    reduce(points, maxOp<scalar>());
-    reduce(candidates, maxOp<scalar>());
-    Info<< typeName << ": resident memory by part, largest processor [MB]:"
-        << " mesh " << mesh << ", stored matrices " << points
-        << " (mesh points) " << candidates << " (candidates)" << endl;
 }
 
 
@@ -281,7 +207,7 @@ void Foam::dcpRBFMotionSolver::solve()
     // Prescribe: the step's boundary displacement (one evaluation of the
     // conditions)
     prescribed_->read();
-    dcprbf::Values d(boundaryPoints_->gather(prescribed_->values()));
+    dcprbf::Values d(context_->boundaryPoints().gather(prescribed_->values()));
     if (rotation_->active())
     {
         // the bodies' rigid motions blended; the RBF interpolates the rest
@@ -318,7 +244,10 @@ void Foam::dcpRBFMotionSolver::solve()
 
     // The conditions' last word; the measured points stay the new points
     // if it changed nothing
-    quality_->setMeasured(prescribed_->finish(quality_->measured()));
+    if (!prescribed_->finish(quality_->measured()))
+    {
+        quality_->changed();
+    }
     timer_->split(&part::points);
     if (!inNewPoints_)
     {
@@ -350,7 +279,7 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
     // the points the quality was measured on, if the displacement is the
     // one they were made from, else made anew. The measured ones by
     // reference (OpenFOAM's callers copy them or read them at once)
-    pointField& measuredPoints = quality_->lastPoints();
+    const pointField& measuredPoints = quality_->lastPoints();
     const bool measured =
         quality_->measured() && measuredPoints.size() == points0().size();
     tmp<pointField> tpoints

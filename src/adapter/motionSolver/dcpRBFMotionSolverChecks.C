@@ -55,28 +55,29 @@ const Foam::polyMesh& Foam::dcpRBFMotionSolver::withPointDisplacement
 
 void Foam::dcpRBFMotionSolver::checkSetSize() const
 {
-    const dcpRBFSelectionSettings& sel = settings_->selection();
-    if (sel.selection == dcpRBFSelectionSettings::mode::all)
+    const dcpRBFSelectionSettings& sel = settings().selection();
+    if (sel.everyCandidate())
     {
         return;
     }
     const dictionary& dict = coeffDict().subDict("controlPoints");
-    const label fewest = settings_->polynomial() ? projection_->dim() + 1 : 1;
+    const label dim = context_->dim();
+    const label fewest = settings().polynomial() ? dim + 1 : 1;
     if (sel.maxPoints < fewest)
     {
         FatalIOErrorInFunction(dict)
             << "maxPoints " << sel.maxPoints << " is below the "
             << fewest << " control points the linear polynomial needs in "
-            << projection_->dim() << "D: take maxPoints " << fewest
+            << dim << "D: take maxPoints " << fewest
             << " or more (or polynomial false)" << exit(FatalIOError);
     }
-    if (sel.minPoints > boundaryPoints_->size())
+    if (sel.minPoints > context_->boundaryPoints().size())
     {
         FatalIOErrorInFunction(dict)
             << "minPoints " << sel.minPoints << " is above the "
-            << boundaryPoints_->size() << " boundary points of movingPatches"
+            << context_->boundaryPoints().size() << " boundary points of movingPatches"
             << " and staticPatches (the candidate control points): take"
-            << " minPoints " << boundaryPoints_->size() << " or fewer"
+            << " minPoints " << context_->boundaryPoints().size() << " or fewer"
             << " (selection all takes every one)" << exit(FatalIOError);
     }
 }
@@ -89,7 +90,7 @@ void Foam::dcpRBFMotionSolver::setThreads() const
     // node's ranks, unless the user says otherwise (dcpRBFThreads)
     #ifdef _OPENMP
     const label nThreads =
-        dcpRBFThreads::set(mesh().nPoints(), settings_->pointsPerThread());
+        dcpRBFThreads::set(mesh().nPoints(), settings().pointsPerThread());
     // ranks may differ (their point counts): the range over them
     const label nMin = returnReduce(nThreads, minOp<label>());
     const label nMax = returnReduce(nThreads, maxOp<label>());
@@ -102,8 +103,8 @@ void Foam::dcpRBFMotionSolver::setThreads() const
         << " OpenMP thread(s)" << (Pstream::parRun() ? " per processor" : "")
         << " (" << (
                fromEnv ? string("OMP_NUM_THREADS")
-             : settings_->pointsPerThread() > 0
-             ? "one per pointsPerThread " + Foam::name(settings_->pointsPerThread())
+             : settings().pointsPerThread() > 0
+             ? "one per pointsPerThread " + Foam::name(settings().pointsPerThread())
                + " mesh points, up to the cores available"
              : string("the cores available")
            ).c_str()
@@ -134,10 +135,10 @@ void Foam::dcpRBFMotionSolver::setThreads() const
 
 void Foam::dcpRBFMotionSolver::checkRegion() const
 {
-    if (region_->size() == 0)
+    if (quality_->region().size() == 0)
     {
         FatalIOErrorInFunction(coeffDict())
-            << "supportRadius " << Foam::name(settings_->kernel().radius()).c_str() << " reaches"
+            << "supportRadius " << Foam::name(settings().kernel().radius()).c_str() << " reaches"
             << " no cell centre from the moving patches' points: the cells"
             << " touching them would take the whole motion (and fold as"
             << " soon as it exceeds their size). Take supportRadius several"

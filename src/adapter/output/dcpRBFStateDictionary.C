@@ -34,7 +34,7 @@ Foam::dcpRBFStateDictionary::dcpRBFStateDictionary
             IOobject::AUTO_WRITE
         )
     ),
-    fill_(std::move(fill))
+    fill_(1, std::move(fill))
 {
     // The entries are text whatever format the header names (the case's
     // writeFormat): read as binary, a list would be read as raw bytes, which
@@ -61,14 +61,17 @@ bool Foam::dcpRBFStateDictionary::writeData(Ostream& os) const
     const int digits = std::numeric_limits<double>::max_digits10;
     dictionary state(*this);
     {
-        // the default back however fill_ ends (FatalError may throw)
+        // the default back however the fills end (FatalError may throw)
         struct scope
         {
             const unsigned was;
             explicit scope(const unsigned d) : was(IOstream::defaultPrecision(d)) {}
             ~scope() { IOstream::defaultPrecision(was); }
         } fullDefault(digits);
-        fill_(state);
+        for (const filler& fill : fill_)
+        {
+            fill(state);
+        }
     }
     const int osDigits = os.precision(digits);
     state.write(os, false);

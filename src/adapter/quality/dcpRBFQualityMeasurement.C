@@ -13,20 +13,28 @@ License
 
 Foam::dcpRBFQualityMeasurement::dcpRBFQualityMeasurement
 (
-    const polyMesh& mesh,
-    const dcpRBFQualityRegion& region,
-    const dcpRBFTwoDPoints& twoDPoints,
-    const pointVectorField& pointDisplacement,
-    const pointField& points0,
-    const label nSwap
+    const dcpRBFContext& context,
+    const bool rotation
 )
 :
-    mesh_(mesh),
-    region_(region),
-    twoDPoints_(twoDPoints),
-    pointDisplacement_(pointDisplacement),
-    points0_(points0),
-    nRanked_(max(label(1), nSwap)),
+    mesh_(context.mesh()),
+    region_
+    (
+        mesh_, context.projection(), context.points0(),
+        context.boundaryPoints().movingPoints(),
+        dcpRBFQualityRegion::checkSources
+        (
+            mesh_, context.projection(), context.points0(),
+            context.boundaryPoints()
+        ),
+        context.settings().kernel().radius(),
+        context.settings().kernel().compact() && !rotation,
+        context.settings().metric()
+    ),
+    twoDPoints_(context.twoDPoints()),
+    pointDisplacement_(context.pointDisplacement()),
+    points0_(context.points0()),
+    nRanked_(max(label(1), context.settings().selection().nSwap)),
     nLowest_(-1),
     rankBest_(true),
     measured_(false),

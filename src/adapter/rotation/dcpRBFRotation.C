@@ -73,27 +73,22 @@ void Foam::dcpRBFRotation::readState()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::dcpRBFRotation::dcpRBFRotation
-(
-    const polyMesh& mesh,
-    const dictionary& coeffs,
-    const dcpRBFSettings& settings,
-    const dcpRBFBoundaryPoints& boundary,
-    const dcpRBFPlaneProjection& projection,
-    const dcprbf::Points& evalPoints
-)
+Foam::dcpRBFRotation::dcpRBFRotation(const dcpRBFContext& context)
 :
     active_
     (
-        dcpRBFDictReader(coeffs).getSwitch
+        dcpRBFDictReader(context.coeffs()).getSwitch
         (
             dcpRBFKeywords::get("dcpRBFCoeffs", "rotationInterpolation")
         )
     ),
-    projection_(projection),
-    boundary_(boundary),
-    evalPoints_(evalPoints)
+    projection_(context.projection()),
+    boundary_(context.boundaryPoints()),
+    evalPoints_(context.evalPoints())
 {
+    const polyMesh& mesh = context.mesh();
+    const dictionary& coeffs = context.coeffs();
+    const dcpRBFSettings& settings = context.settings();
     if (coeffs.found("rotation") && !coeffs.findDict("rotation"))
     {
         FatalIOErrorInFunction(coeffs)

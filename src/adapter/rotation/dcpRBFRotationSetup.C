@@ -19,70 +19,81 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::dcpRBFRotation::readBodies
+Foam::List<const Foam::dictionary*> Foam::dcpRBFRotation::bodyDictionaries
 (
     const polyMesh& mesh,
     const dictionary& dict,
-    const dcpRBFSettings& settings
+    const dcpRBFSettings& settings,
+    List<labelList>& groups
 )
 {
-    const polyBoundaryMesh& patches = mesh.boundaryMesh();
-    List<labelList> groups;
-    List<const dictionary*> bodyDicts;
-    if (dict.found("bodies"))
-    {
-        if (!dict.findDict("bodies"))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Keyword bodies must be a sub-dictionary of bodies, each"
-                << " with patches and an optional centre, e.g. bodies { wing"
-                << " { patches (wing); centre (0.25 0 0); } }"
-                << exit(FatalIOError);
-        }
-        if (dict.found("centre"))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Keyword centre: with bodies, each body has its own centre"
-                << " (bodies { wing { patches (wing); centre (0.25 0 0); } });"
-                << " remove centre from rotation" << exit(FatalIOError);
-        }
-        const dictionary& bodies = dict.subDict("bodies");
-        for (const entry& e : bodies)
-        {
-            if (!e.isDict())
-            {
-                FatalIOErrorInFunction(bodies)
-                    << "Keyword bodies: entry " << e.keyword() << " is not a"
-                    << " dictionary { patches (...); centre (x y z); }"
-                    << exit(FatalIOError);
-            }
-            dcpRBFDictReader(e.dict()).checkKeywordsOf("bodies");
-            groups.append
-            (
-                dcpRBFSettings::matchPatches
-                (
-                    e.dict(), "patches",
-                    dcpRBFDictReader(e.dict()).getWordRes("patches", false), patches
-                )
-            );
-            bodyNames_.append(e.keyword());
-            bodyDicts.append(&e.dict());
-        }
-        if (groups.empty())
-        {
-            FatalIOErrorInFunction(bodies)
-                << "Keyword bodies is empty. Allowed: one sub-dictionary per"
-                << " body, e.g. wing { patches (wing); }" << exit(FatalIOError);
-        }
-    }
-    else
+    // without bodies: the moving patches, one body
+    if (!dict.found("bodies"))
     {
         groups = List<labelList>(1, settings.movingPatchIDs());
         bodyNames_ = wordList(1, "movingPatches");
-        bodyDicts = List<const dictionary*>(1, &dict);
+        return List<const dictionary*>(1, &dict);
     }
+    if (!dict.findDict("bodies"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword bodies must be a sub-dictionary of bodies, each"
+            << " with patches and an optional centre, e.g. bodies { wing"
+            << " { patches (wing); centre (0.25 0 0); } }"
+            << exit(FatalIOError);
+    }
+    if (dict.found("centre"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword centre: with bodies, each body has its own centre"
+            << " (bodies { wing { patches (wing); centre (0.25 0 0); } });"
+            << " remove centre from rotation" << exit(FatalIOError);
+    }
+    const dictionary& bodies = dict.subDict("bodies");
+    List<const dictionary*> bodyDicts;
+    for (const entry& e : bodies)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(bodies)
+                << "Keyword bodies: entry " << e.keyword() << " is not a"
+                << " dictionary { patches (...); centre (x y z); }"
+                << exit(FatalIOError);
+        }
+        dcpRBFDictReader(e.dict()).checkKeywordsOf("bodies");
+        groups.append
+        (
+            dcpRBFSettings::matchPatches
+            (
+                e.dict(), "patches",
+                dcpRBFDictReader(e.dict()).getWordRes("patches", false),
+                mesh.boundaryMesh()
+            )
+        );
+        bodyNames_.append(e.keyword());
+        bodyDicts.append(&e.dict());
+    }
+    if (groups.empty())
+    {
+        FatalIOErrorInFunction(bodies)
+            << "Keyword bodies is empty. Allowed: one sub-dictionary per"
+            << " body, e.g. wing { patches (wing); }" << exit(FatalIOError);
+    }
+    return bodyDicts;
+}
 
-    // Mark the mesh points of each body (k + 1; 0: none)
+
+Foam::labelList Foam::dcpRBFRotation::markBodies
+(
+    const polyMesh& mesh,
+    const dictionary& dict,
+    const dcpRBFSettings& settings,
+    const List<labelList>& groups,
+    const List<const dictionary*>& bodyDicts
+) const
+{
+    // each moving patch in exactly one body
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
     labelList mark(mesh.nPoints(), 0);
     labelList bodyOfPatch(patches.size(), -1);
     forAll(groups, b)
@@ -115,8 +126,20 @@ void Foam::dcpRBFRotation::readBodies
                 << " one body" << exit(FatalIOError);
         }
     }
+    return mark;
+}
 
+
+void Foam::dcpRBFRotation::checkApart
+(
+    const polyMesh& mesh,
+    const dictionary& dict,
+    const List<labelList>& groups,
+    const labelList& mark
+) const
+{
     // Bodies that touch (share points) cannot turn apart: one body
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
     labelList lowest(mesh.nPoints(), labelMax);
     forAll(groups, b)
     {
@@ -149,15 +172,23 @@ void Foam::dcpRBFRotation::readBodies
             << " motion, e.g. a flap's deflection, is interpolated as the"
             << " non-rigid rest)" << exit(FatalIOError);
     }
+}
 
-    pointField marks(mesh.nPoints(), Zero);
+
+void Foam::dcpRBFRotation::assignCandidates
+(
+    const labelList& mark,
+    const label nBodies
+)
+{
+    pointField marks(mark.size(), Zero);
     forAll(mark, pointi)
     {
         marks[pointi] = vector::one*scalar(mark[pointi]);
     }
     const dcprbf::Values global(boundary_.gather(marks));
     bodyOf_.assign(boundary_.size(), -1);
-    bodyPoints_.assign(groups.size(), {});
+    bodyPoints_.assign(nBodies, {});
     for (label i = 0; i < boundary_.size(); ++i)
     {
         bodyOf_[i] = int(std::lround(global(i, 0))) - 1;
@@ -166,56 +197,76 @@ void Foam::dcpRBFRotation::readBodies
             bodyPoints_[bodyOf_[i]].push_back(i);
         }
     }
+}
 
-    // Centres: given (mesh coordinates), or the centroid of the body's points
+
+void Foam::dcpRBFRotation::readCentre(const label b, const dictionary& body)
+{
+    // given (mesh coordinates), or the centroid of the body's points
+    if (bodyPoints_[b].empty())
+    {
+        FatalIOErrorInFunction(body)
+            << "Body " << bodyNames_[b] << " has no boundary points"
+            << exit(FatalIOError);
+    }
+    if (!body.found("centre"))
+    {
+        centres_[b].setZero();
+        for (const Eigen::Index i : bodyPoints_[b])
+        {
+            centres_[b] += boundary_.points().row(i).transpose();
+        }
+        centres_[b] /= double(bodyPoints_[b].size());
+        return;
+    }
+    projection_.toCore
+    (
+        dcpRBFDictReader(body).getPoint("centre"), centres_[b].data()
+    );
+    Eigen::Vector3d lo(Eigen::Vector3d::Constant(GREAT)), hi(-lo);
+    for (const Eigen::Index i : bodyPoints_[b])
+    {
+        lo = lo.cwiseMin(boundary_.points().row(i).transpose());
+        hi = hi.cwiseMax(boundary_.points().row(i).transpose());
+    }
+    const Eigen::Vector3d margin(0.1*(hi - lo).norm()*Eigen::Vector3d::Ones());
+    if
+    (
+        (centres_[b].array() < (lo - margin).array()).any()
+     || (centres_[b].array() > (hi + margin).array()).any()
+    )
+    {
+        WarningInFunction
+            << "Body " << bodyNames_[b] << ": centre "
+            << body.get<point>("centre") << " is outside the"
+            << " body's bounding box (" << projection_.pointFromCore(lo.data())
+            << ' ' << projection_.pointFromCore(hi.data()) << "): the"
+            << " blend turns everything within the body's farthest"
+            << " point from the centre rigidly, a centre off the body"
+            << " leaves less room for the twist. Is it the pivot?" << endl;
+    }
+}
+
+
+void Foam::dcpRBFRotation::readBodies
+(
+    const polyMesh& mesh,
+    const dictionary& dict,
+    const dcpRBFSettings& settings
+)
+{
+    List<labelList> groups;
+    const List<const dictionary*> bodyDicts
+    (
+        bodyDictionaries(mesh, dict, settings, groups)
+    );
+    const labelList mark(markBodies(mesh, dict, settings, groups, bodyDicts));
+    checkApart(mesh, dict, groups, mark);
+    assignCandidates(mark, groups.size());
     centres_.resize(groups.size());
     forAll(groups, b)
     {
-        if (bodyPoints_[b].empty())
-        {
-            FatalIOErrorInFunction(*bodyDicts[b])
-                << "Body " << bodyNames_[b] << " has no boundary points"
-                << exit(FatalIOError);
-        }
-        if (bodyDicts[b]->found("centre"))
-        {
-            projection_.toCore
-            (
-                dcpRBFDictReader(*bodyDicts[b]).getPoint("centre"),
-                centres_[b].data()
-            );
-            Eigen::Vector3d lo(Eigen::Vector3d::Constant(GREAT)), hi(-lo);
-            for (const Eigen::Index i : bodyPoints_[b])
-            {
-                lo = lo.cwiseMin(boundary_.points().row(i).transpose());
-                hi = hi.cwiseMax(boundary_.points().row(i).transpose());
-            }
-            const Eigen::Vector3d margin(0.1*(hi - lo).norm()*Eigen::Vector3d::Ones());
-            if
-            (
-                (centres_[b].array() < (lo - margin).array()).any()
-             || (centres_[b].array() > (hi + margin).array()).any()
-            )
-            {
-                WarningInFunction
-                    << "Body " << bodyNames_[b] << ": centre "
-                    << bodyDicts[b]->get<point>("centre") << " is outside the"
-                    << " body's bounding box (" << projection_.pointFromCore(lo.data())
-                    << ' ' << projection_.pointFromCore(hi.data()) << "): the"
-                    << " blend turns everything within the body's farthest"
-                    << " point from the centre rigidly, a centre off the body"
-                    << " leaves less room for the twist. Is it the pivot?" << endl;
-            }
-        }
-        else
-        {
-            centres_[b].setZero();
-            for (const Eigen::Index i : bodyPoints_[b])
-            {
-                centres_[b] += boundary_.points().row(i).transpose();
-            }
-            centres_[b] /= double(bodyPoints_[b].size());
-        }
+        readCentre(b, *bodyDicts[b]);
     }
 }
 

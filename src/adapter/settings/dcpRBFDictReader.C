@@ -344,4 +344,44 @@ Foam::string Foam::dcpRBFDictReader::asWritten
 }
 
 
+Foam::scalar Foam::dcpRBFDictReader::getLength
+(
+    const dcpRBFKeyword& k,
+    const word& unitWord,
+    const std::function<scalar()>& unit
+) const
+{
+    const word keyword(k.name);
+    if (!dict_.found(keyword))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " missing: a length [m], e.g. "
+            << keyword << " 2.5; or a factor of " << unitWord << ", e.g. "
+            << keyword << " 5 " << unitWord << ";" << exit(FatalIOError);
+    }
+    ITstream& is = dict_.lookup(keyword);
+    if (is.empty() || !is[0].isNumber())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " must be a length [m] or \"factor "
+            << unitWord << "\"; got " << asWritten(is).c_str()
+            << exit(FatalIOError);
+    }
+    const scalar factor(readScalar(is));
+    if (is.eof())
+    {
+        return factor;
+    }
+    const token t(is);
+    if (!t.isWord() || t.wordToken() != unitWord)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << ": a length [m] or \"factor "
+            << unitWord << "\"; got " << t << " after " << factor
+            << ". Allowed unit word: " << unitWord << exit(FatalIOError);
+    }
+    return factor*unit();
+}
+
+
 // ************************************************************************* //

@@ -55,7 +55,7 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::choice
     return
     {
         dictionary, name, valueType::choice, 0, deflt, choices, 0, 0, true,
-        true, help, scope::always, nullptr, nullptr
+        true, help, scope::always, nullptr, nullptr, nullptr
     };
 }
 
@@ -69,7 +69,7 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::onOff
     return
     {
         dictionary, name, valueType::switchValue, double(deflt), nullptr,
-        nullptr, 0, 1, true, true, help, scope::always, nullptr, nullptr
+        nullptr, 0, 1, true, true, help, scope::always, nullptr, nullptr, nullptr
     };
 }
 
@@ -84,7 +84,7 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::real
     return
     {
         dictionary, name, valueType::real, deflt, nullptr, nullptr, lo, hi,
-        lowIncluded, highIncluded, help, scope::always, nullptr, nullptr
+        lowIncluded, highIncluded, help, scope::always, nullptr, nullptr, nullptr
     };
 }
 
@@ -98,7 +98,7 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::integer
     return
     {
         dictionary, name, valueType::integer, deflt, nullptr, nullptr, lo, hi,
-        true, true, help, scope::always, nullptr, nullptr
+        true, true, help, scope::always, nullptr, nullptr, nullptr
     };
 }
 
@@ -112,7 +112,7 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::other
     return
     {
         dictionary, name, type, 0, nullptr, nullptr, 0, 0, true, true, help,
-        scope::always, defaultText, condition
+        scope::always, defaultText, condition, nullptr
     };
 }
 
@@ -121,6 +121,14 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::only(const scope s) const
 {
     dcpRBFKeyword k(*this);
     k.allowedWith = s;
+    return k;
+}
+
+
+Foam::dcpRBFKeyword Foam::dcpRBFKeyword::ofRule(const char* r) const
+{
+    dcpRBFKeyword k(only(scope::dynamic));
+    k.rule = r;
     return k;
 }
 

@@ -186,22 +186,22 @@ const std::vector<K>& table()
     (
         cp, "swapBlendSteps", 4, 1, 1000,
         "a kept swap is phased in over this many steps"
-    ).only(scope::errorGuided),
+    ).ofRule("errorGuided"),
     K::choice
     (
         cp, "trialPoints", "window", "window all",
         "where a trial's mesh is made"
-    ).only(scope::errorGuided),
+    ).ofRule("errorGuided"),
     K::integer
     (
         cp, "trialBackoff", 4, 1, dcpRBFSelectionSettings::maxTrialWait,
         "steps the next trial waits after an undone one"
-    ).only(scope::errorGuided),
+    ).ofRule("errorGuided"),
     K::real
     (
         cp, "trialQualityDrop", 0.05, 0, false, 1, true,
         "a wait ends early when the minimum quality falls by more than this"
-    ).only(scope::errorGuided),
+    ).ofRule("errorGuided"),
     K::integer
     (
         cp, "protectSteps", 3, 0, 1000000,

@@ -8,6 +8,7 @@ License
 
 #include "dcpRBFSelectionSettings.H"
 #include "dcpRBFDictReader.H"
+#include "Switch.H"
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
 
@@ -24,13 +25,6 @@ Foam::dcpRBFSelectionSettings::targetNames
 ({
     {target::displacement, "displacement"},
     {target::unit, "unit"}
-});
-
-const Foam::Enum<Foam::dcpRBFSelectionSettings::rule>
-Foam::dcpRBFSelectionSettings::ruleNames
-({
-    {rule::errorGuided, "errorGuided"},
-    {rule::nearest, "nearest"}
 });
 
 const Foam::Enum<Foam::dcpRBFSelectionSettings::trialPoints>
@@ -62,10 +56,6 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     (
         dcpRBFKeywords::namesOnly("controlPoints", scope::dynamic)
     );
-    const wordList errorGuidedKeywords
-    (
-        dcpRBFKeywords::namesOnly("controlPoints", scope::errorGuided)
-    );
 
     selection = r.getEnum(key("selection"), modeNames);
     tolerance = r.getScalar(key("tolerance"));
@@ -86,25 +76,32 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
         reselectTolerance =
             r.getScalar(k, max(min(10*tolerance, 1.0), tolerance), tolerance);
     }
-    swapRule = r.getEnum(key("swapRule"), ruleNames);
+    swapRule = key("swapRule").choiceList()[r.getChoice(key("swapRule"))];
     nSwap = r.getLabel
     (
-        key("nSwap"), swapRule == rule::errorGuided ? label(key("nSwap").deflt) : 1
+        key("nSwap"), swapRule == "errorGuided" ? label(key("nSwap").deflt) : 1
     );
     protectSteps = r.getLabel(key("protectSteps"));
     swapBlendSteps = r.getLabel(key("swapBlendSteps"));
     trialAt = r.getEnum(key("trialPoints"), trialPointsNames);
     trialBackoff = r.getLabel(key("trialBackoff"));
     trialQualityDrop = r.getScalar(key("trialQualityDrop"));
-    for (const word& k : errorGuidedKeywords)
+    for (const word& k : keywords)
     {
-        if (swapRule == rule::nearest && dict.found(k))
+        // a swap rule's own keywords
+        const char* rule = key(k.c_str()).rule;
+        if (!rule || !dict.found(k))
+        {
+            continue;
+        }
+        if (swapRule != rule)
         {
             FatalIOErrorInFunction(dict)
-                << "Keyword " << k << " has no effect with swapRule nearest."
-                << " It belongs to swapRule errorGuided" << exit(FatalIOError);
+                << "Keyword " << k << " has no effect with swapRule "
+                << swapRule << ". It belongs to swapRule " << rule
+                << exit(FatalIOError);
         }
-        if (nSwap == 0 && dict.found(k))
+        if (nSwap == 0)
         {
             FatalIOErrorInFunction(dict)
                 << "Keyword " << k << " has no effect with nSwap 0 (no trial"
@@ -139,6 +136,27 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
                     << " selection dynamic" << exit(FatalIOError);
             }
         }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dcpRBFSelectionSettings::setDependsOn(dictionary& d) const
+{
+    // as strings: written quoted, read back as written
+    const auto put = [&](const word& key, const std::string& value)
+    {
+        d.set(key, string(value));
+    };
+    put("selection", selectionName());
+    if (!everyCandidate())
+    {
+        put("tolerance", Foam::name(tolerance));
+        put("minPoints", Foam::name(minPoints));
+        put("maxPoints", Foam::name(maxPoints));
+        put("doubleEdged", Switch(doubleEdged).c_str());
+        put("selectOn", targetNames[selectOn]);
     }
 }
 

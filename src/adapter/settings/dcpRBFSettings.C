@@ -206,59 +206,45 @@ void Foam::dcpRBFSettings::checkPatchLists
 }
 
 
-Foam::scalar Foam::dcpRBFSettings::readRadius
+Foam::scalar Foam::dcpRBFSettings::movingExtent
 (
-    const dictionary& dict,
     const polyMesh& mesh,
     const pointField& points0
 ) const
 {
-    if (!dict.found("supportRadius"))
+    // the moving patches' bounding box's diagonal, in the plane of a 2D
+    // mesh (not the extrusion's thickness)
+    boundBox bb(boundBox::invertedBox);
+    for (const label patchi : movingPatchIDs_)
     {
-        FatalIOErrorInFunction(dict)
-            << "Keyword supportRadius missing: a length [m], e.g."
-            << " supportRadius 2.5; or a factor of the moving patches'"
-            << " extent, e.g. supportRadius 5 movingExtent;"
-            << exit(FatalIOError);
+        bb.add(points0, mesh.boundaryMesh()[patchi].meshPoints());
     }
-    ITstream& is = dict.lookup("supportRadius");
-    if (is.empty() || !is[0].isNumber())
+    bb.reduce();
+    vector span(bb.span());
+    for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
     {
-        FatalIOErrorInFunction(dict)
-            << "Keyword supportRadius must be a length [m] or \"factor"
-            << " movingExtent\"; got " << dcpRBFDictReader::asWritten(is).c_str()
-            << exit(FatalIOError);
+        if (mesh.geometricD()[cmpt] == -1) span[cmpt] = 0;
     }
-    const scalar factor(readScalar(is));
-    scalar radius = factor;
-    if (!is.eof())
-    {
-        const token t(is);
-        if (!t.isWord() || t.wordToken() != "movingExtent")
-        {
-            FatalIOErrorInFunction(dict)
-                << "Keyword supportRadius: a length [m] or"
-                << " \"factor movingExtent\"; got " << t << " after "
-                << factor << ". Allowed unit word: movingExtent"
-                << exit(FatalIOError);
-        }
-        boundBox bb(boundBox::invertedBox);
-        for (const label patchi : movingPatchIDs_)
-        {
-            bb.add(points0, mesh.boundaryMesh()[patchi].meshPoints());
-        }
-        bb.reduce();
-        // in the plane of a 2D mesh (not the extrusion's thickness)
-        vector span(bb.span());
-        for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
-        {
-            if (mesh.geometricD()[cmpt] == -1) span[cmpt] = 0;
-        }
-        radius = factor*mag(span);
-    }
+    return mag(span);
+}
+
+
+Foam::scalar Foam::dcpRBFSettings::readRadius
+(
+    const dcpRBFDictReader& r,
+    const polyMesh& mesh,
+    const pointField& points0
+) const
+{
+    const scalar radius =
+        r.getLength
+        (
+            key("supportRadius"), "movingExtent",
+            [&]() { return movingExtent(mesh, points0); }
+        );
     if (!(radius > 0))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(r.dict())
             << "Keyword supportRadius must be > 0 [m], got " << radius
             << exit(FatalIOError);
     }
@@ -267,7 +253,7 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
     const scalar size = mag(mesh.bounds().span());
     if (!(radius >= 1e-9*size && radius <= 1e9*size))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(r.dict())
             << "Keyword supportRadius " << Foam::name(radius).c_str()
             << " is no length for this mesh (its bounding box's diagonal: "
             << Foam::name(size).c_str() << "): allowed "
@@ -292,7 +278,7 @@ dcprbf::RadialKernel Foam::dcpRBFSettings::readKernel
         k, dcpRBFCompat::makeList<word>(dcprbf::RadialKernel::names())
     );
     const word name(k.choiceList()[r.getChoice(k)]);
-    return dcprbf::RadialKernel::fromName(name, readRadius(r.dict(), mesh, points0));
+    return dcprbf::RadialKernel::fromName(name, readRadius(r, mesh, points0));
 }
 
 

@@ -13,7 +13,7 @@ License
 namespace Foam
 {
     defineTypeNameAndDebug(dcpRBFSwapRule, 0);
-    defineRunTimeSelectionTable(dcpRBFSwapRule, components);
+    defineRunTimeSelectionTable(dcpRBFSwapRule, context);
 }
 
 
@@ -21,69 +21,53 @@ namespace Foam
 
 Foam::dcpRBFSwapRule::dcpRBFSwapRule
 (
-    const polyMesh& mesh,
-    const dcpRBFSettings& settings,
+    const dcpRBFContext& context,
     dcpRBFControlPoints& controlPoints,
-    const dcpRBFQualityRegion& region,
     dcpRBFQualityMeasurement& quality,
-    dcpRBFInterpolation& interpolation,
-    pointVectorField& pointDisplacement,
-    const pointField& points0
+    dcpRBFInterpolation& interpolation
 )
 :
-    mesh_(mesh),
-    settings_(settings),
+    context_(context),
     controlPoints_(controlPoints),
-    region_(region),
     quality_(quality),
-    interpolation_(interpolation),
-    pointDisplacement_(pointDisplacement),
-    points0_(points0)
+    interpolation_(interpolation)
 {}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::label Foam::dcpRBFSwapRule::lowestCells(const label) const
-{
-    // outside selection dynamic no rule swaps: the guard's worst cell
-    return max(label(1), settings_.selection().nSwap);
-}
 
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
 Foam::autoPtr<Foam::dcpRBFSwapRule> Foam::dcpRBFSwapRule::New
 (
-    const word& ruleName,
-    const polyMesh& mesh,
-    const dcpRBFSettings& settings,
+    const dcpRBFContext& context,
     dcpRBFControlPoints& controlPoints,
-    const dcpRBFQualityRegion& region,
     dcpRBFQualityMeasurement& quality,
-    dcpRBFInterpolation& interpolation,
-    pointVectorField& pointDisplacement,
-    const pointField& points0
+    dcpRBFInterpolation& interpolation
 )
 {
-    // (the keyword's value was validated against the rule names when read)
-    auto cstrIter = componentsConstructorTablePtr_->cfind(ruleName);
+    // (the keyword's value was validated against the table's choices when
+    // read: a name missing here is a rule not built into the library)
+    const word name(context.settings().selection().swapRuleName());
+    auto cstrIter = contextConstructorTablePtr_->cfind(name);
     if (!cstrIter.good())
     {
         FatalErrorInFunction
-            << "Unknown swapRule " << ruleName << nl << nl
+            << "Unknown swapRule " << name << nl << nl
             << "Valid swap rules: "
-            << componentsConstructorTablePtr_->sortedToc()
+            << contextConstructorTablePtr_->sortedToc()
             << exit(FatalError);
     }
     return autoPtr<dcpRBFSwapRule>
     (
-        cstrIter()
-        (
-            mesh, settings, controlPoints, region, quality, interpolation,
-            pointDisplacement, points0
-        )
+        cstrIter()(context, controlPoints, quality, interpolation)
     );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::dcpRBFSwapRule::lowestCells(const label) const
+{
+    return max(label(1), context_.settings().selection().nSwap);
 }
 
 
