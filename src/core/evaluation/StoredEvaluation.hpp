@@ -223,6 +223,28 @@ private:
     //  it would take more than budget bytes (so would a build)
     Merge merge(int k, const Points& centres, std::size_t budget, Slot& s) const;
 
+    //- What merge() copies and computes (StoredEvaluationMerge.cpp)
+    struct MergePlan;
+
+    //- The plan of a merge from slot k for centres c; false (notWorth) if
+    //  the kernel is global, slot k is unused or empty, or fewer than half
+    //  of the centres are shared
+    bool planMerge(int k, const Points& c, MergePlan& p) const;
+
+    //- merge()'s first pass: row i's number of entries into count[i + 1]
+    void countMerged
+    (
+        const Slot& from, const MergePlan& p, std::vector<std::size_t>& count
+    ) const;
+
+    //- s's column and value arrays sized for nnz entries with columns of
+    //  indexBytes (room for extra more kept), its dense matrix emptied
+    static void sizeStorage(Slot& s, std::size_t nnz, int indexBytes, std::size_t extra);
+
+    //- merge()'s second pass: each row's entries into s (its rows and
+    //  storage sized): those copied from slot from, then the new ones
+    void fillMerged(const Slot& from, const MergePlan& p, int indexBytes, Slot& s) const;
+
     //- Patch slot k for these centres; false if they differ too much or
     //  it would take more than budget bytes
     bool patch(int k, const Points& centres, std::size_t budget);
