@@ -45,6 +45,57 @@ inline void rowProduct
 }
 
 
+//- c[C j + q] = m(j, q): m's first C columns, rows 0 .. rows - 1, row by
+//  row, contiguous (c sized)
+template<int C, class Matrix, class Index>
+inline void packColumns(const Matrix& m, const Index rows, std::vector<double>& c)
+{
+    for (Index j = 0; j < rows; ++j)
+    {
+        for (int q = 0; q < C; ++q) c[C*j + q] = m(j, q);
+    }
+}
+
+
+#if defined(__GNUC__)
+//- Each cache line of [from, to) requested now. Called from the row
+//  loop itself: GCC 12 (-ffinite-loops) deleted these loops as without
+//  effect when a helper of the row's arrays called them (listed rows
+//  1.4x slower, cold)
+inline void prefetchLines(const void* from, const void* to)
+{
+    const std::uintptr_t line = 64;
+    for
+    (
+        std::uintptr_t at = reinterpret_cast<std::uintptr_t>(from) & ~(line - 1);
+        at < reinterpret_cast<std::uintptr_t>(to);
+        at += line
+    )
+    {
+        __builtin_prefetch(reinterpret_cast<const void*>(at));
+    }
+}
+#endif
+
+
+//- A row's values v to the scatter's targets (row i's), else to row i of
+//  out (its 3 columns)
+template<class Scatter>
+inline void writeRow(const Scatter* scatter, const std::ptrdiff_t i, const double* v, Values& out)
+{
+    if (scatter)
+    {
+        scatter->targets.write(std::size_t(i), v, scatter->components, scatter->out);
+    }
+    else
+    {
+        out(i, 0) = v[0];
+        out(i, 1) = v[1];
+        out(i, 2) = v[2];
+    }
+}
+
+
 //- The right-hand sides' columns in the product: 2 when the last column of
 //  alpha and beta is zero (2D: the normal direction), else 3
 int activeColumns(const Values& alpha, const Eigen::MatrixX3d& beta)
@@ -79,14 +130,8 @@ void StoredEvaluation::product
     const int L = int(basis_.cols());   // P - 1: Q's columns after the ones
     // alpha and beta with C columns, contiguous
     std::vector<double> a(C*alpha.rows()), b(C*P);
-    for (Eigen::Index j = 0; j < alpha.rows(); ++j)
-    {
-        for (int q = 0; q < C; ++q) a[C*j + q] = alpha(j, q);
-    }
-    for (int p = 0; p < P; ++p)
-    {
-        for (int q = 0; q < C; ++q) b[C*p + q] = beta(p, q);
-    }
+    packColumns<C>(alpha, alpha.rows(), a);
+    packColumns<C>(beta, P, b);
     if (s.dense.size())
     {
         out.noalias() = s.dense*alpha;
@@ -107,23 +152,10 @@ void StoredEvaluation::product
             // (scattered rows defeat the hardware's prefetch), each cache
             // line of its values and columns
             const std::size_t k = s.outer[row[r + 2]], e = s.outer[row[r + 2] + 1];
-            const auto ahead = [](const void* from, const void* to)
-            {
-                const std::uintptr_t line = 64;
-                for
-                (
-                    std::uintptr_t at = reinterpret_cast<std::uintptr_t>(from) & ~(line - 1);
-                    at < reinterpret_cast<std::uintptr_t>(to);
-                    at += line
-                )
-                {
-                    __builtin_prefetch(reinterpret_cast<const void*>(at));
-                }
-            };
-            ahead(s.values.data() + k, s.values.data() + e);
-            if (!s.inner.empty()) ahead(s.inner.data() + k, s.inner.data() + e);
-            else if (!s.inner8.empty()) ahead(s.inner8.data() + k, s.inner8.data() + e);
-            else if (!s.inner32.empty()) ahead(s.inner32.data() + k, s.inner32.data() + e);
+            prefetchLines(s.values.data() + k, s.values.data() + e);
+            if (!s.inner.empty()) prefetchLines(s.inner.data() + k, s.inner.data() + e);
+            else if (!s.inner8.empty()) prefetchLines(s.inner8.data() + k, s.inner8.data() + e);
+            else if (!s.inner32.empty()) prefetchLines(s.inner32.data() + k, s.inner32.data() + e);
         }
         #endif
         double v[3] = {0, 0, 0};
@@ -161,16 +193,7 @@ void StoredEvaluation::product
             const double* w = patchWeights + C*pEntry[k];
             for (int q = 0; q < C; ++q) v[q] += pValue[k]*w[q];
         }
-        if (scatter)
-        {
-            scatter->targets.write(std::size_t(i), v, scatter->components, scatter->out);
-        }
-        else
-        {
-            out(i, 0) = v[0];
-            out(i, 1) = v[1];
-            out(i, 2) = v[2];
-        }
+        writeRow(scatter, i, v, out);
     }
 }
 
