@@ -33,6 +33,44 @@ void appendRow
     toStart.push_back(to.size());
 }
 
+
+//- Throw unless the compressed rows are consistent (each ending at its
+//  array's size), every cell has faces and every face index is a face of
+//  at least 3 points (fewer than 2^31 cell faces)
+void checkRows
+(
+    const std::vector<std::size_t>& cellStart,
+    const std::vector<int>& cellFaces,
+    const std::vector<std::size_t>& faceStart,
+    const std::vector<int>& facePoints
+)
+{
+    if (cellStart.empty() || cellStart.back() != cellFaces.size()
+     || faceStart.empty() || faceStart.back() != facePoints.size())
+    {
+        throw std::invalid_argument("CellQualityScan: inconsistent compressed rows");
+    }
+    for (std::size_t i = 0; i + 1 < cellStart.size(); ++i)
+    {
+        if (cellStart[i + 1] <= cellStart[i])
+        {
+            throw std::invalid_argument("CellQualityScan: a cell without faces");
+        }
+    }
+    if (cellFaces.size() > std::size_t(std::numeric_limits<int>::max()))
+    {
+        throw std::invalid_argument("CellQualityScan: more than 2^31 cell faces");
+    }
+    const std::size_t nFaces = faceStart.size() - 1;
+    for (const int f : cellFaces)
+    {
+        if (f < 0 || std::size_t(f) >= nFaces || faceStart[f + 1] - faceStart[f] < 3)
+        {
+            throw std::invalid_argument("CellQualityScan: face index or face size");
+        }
+    }
+}
+
 } // namespace
 
 
@@ -50,55 +88,49 @@ CellQualityScan::CellQualityScan
     facePoints_(std::move(facePoints)),
     metric_(metric)
 {
-    if (cellStart.empty() || cellStart.back() != cellFaces.size()
-     || faceStart_.empty() || faceStart_.back() != facePoints_.size())
-    {
-        throw std::invalid_argument("CellQualityScan: inconsistent compressed rows");
-    }
-    for (std::size_t i = 0; i + 1 < cellStart.size(); ++i)
-    {
-        if (cellStart[i + 1] <= cellStart[i])
-        {
-            throw std::invalid_argument("CellQualityScan: a cell without faces");
-        }
-    }
-    if (cellFaces.size() > std::size_t(std::numeric_limits<int>::max()))
-    {
-        throw std::invalid_argument("CellQualityScan: more than 2^31 cell faces");
-    }
-    const std::size_t nFaces = faceStart_.size() - 1;
-    for (const int f : cellFaces)
-    {
-        if (f < 0 || std::size_t(f) >= nFaces || faceStart_[f + 1] - faceStart_[f] < 3)
-        {
-            throw std::invalid_argument("CellQualityScan: face index or face size");
-        }
-    }
+    checkRows(cellStart, cellFaces, faceStart_, facePoints_);
+    orderCells(cellStart, cellFaces, points0);
+    renumberPoints(cellFaces);
+    storeFacesWithCells(cellFaces);
+    std::vector<int>().swap(cellFaces);
+    classify(cellStart);
+    setUpReference(points0);
+}
 
+
+void CellQualityScan::orderCells
+(
+    std::vector<std::size_t>& cellStart,
+    std::vector<int>& cellFaces,
+    const double* points0
+)
+{
     // The cells visited in Morton order of one point each, so that the
     // points below are numbered with locality whatever the cells' numbering
+    const std::size_t nCells = cellStart.size() - 1;
+    std::vector<double> key(3*nCells);
+    for (std::size_t i = 0; i < nCells; ++i)
     {
-        const std::size_t nCells = cellStart.size() - 1;
-        std::vector<double> key(3*nCells);
-        for (std::size_t i = 0; i < nCells; ++i)
-        {
-            const int f = cellFaces[cellStart[i]];
-            const int pi = facePoints_[faceStart_[f]];
-            if (pi < 0) throw std::invalid_argument("CellQualityScan: point index");
-            for (int d = 0; d < 3; ++d) key[3*i + d] = points0[3*std::size_t(pi) + d];
-        }
-        order_ = mortonOrder(key.data(), nCells);
-        std::vector<std::size_t> start(1, 0);
-        std::vector<int> faces;
-        faces.reserve(cellFaces.size());
-        for (const int c : order_)
-        {
-            appendRow(faces, start, cellFaces, cellStart, std::size_t(c));
-        }
-        cellStart.swap(start);
-        cellFaces.swap(faces);
+        const int f = cellFaces[cellStart[i]];
+        const int pi = facePoints_[faceStart_[f]];
+        if (pi < 0) throw std::invalid_argument("CellQualityScan: point index");
+        for (int d = 0; d < 3; ++d) key[3*i + d] = points0[3*std::size_t(pi) + d];
     }
+    order_ = mortonOrder(key.data(), nCells);
+    std::vector<std::size_t> start(1, 0);
+    std::vector<int> faces;
+    faces.reserve(cellFaces.size());
+    for (const int c : order_)
+    {
+        appendRow(faces, start, cellFaces, cellStart, std::size_t(c));
+    }
+    cellStart.swap(start);
+    cellFaces.swap(faces);
+}
 
+
+void CellQualityScan::renumberPoints(const std::vector<int>& cellFaces)
+{
     // The points renumbered in the order in which the cells use them (a
     // measurement reads them from a compact copy, mostly in order)
     int maxIndex = -1;
@@ -120,23 +152,28 @@ CellQualityScan::CellQualityScan
         }
     }
     for (int& pi : facePoints_) pi = local[pi];
+}
 
+
+void CellQualityScan::storeFacesWithCells(const std::vector<int>& cellFaces)
+{
     // Each cell's faces stored with the cell (a face shared by two cells
     // twice): a measurement reads the topology in order
+    std::vector<std::size_t> entryStart(1, 0);
+    std::vector<int> entryPoints;
+    entryStart.reserve(cellFaces.size() + 1);
+    for (const int f : cellFaces)
     {
-        std::vector<std::size_t> entryStart(1, 0);
-        std::vector<int> entryPoints;
-        entryStart.reserve(cellFaces.size() + 1);
-        for (const int f : cellFaces)
-        {
-            appendRow(entryPoints, entryStart, facePoints_, faceStart_, std::size_t(f));
-        }
-        faceStart_.swap(entryStart);
-        facePoints_.swap(entryPoints);
+        appendRow(entryPoints, entryStart, facePoints_, faceStart_, std::size_t(f));
     }
-    std::vector<int>().swap(cellFaces);
-    classify(cellStart);
+    faceStart_.swap(entryStart);
+    facePoints_.swap(entryPoints);
+}
 
+
+void CellQualityScan::setUpReference(const double* points0)
+{
+    // The points used, and the general cells' face and cell centres
     points0_.resize(3*pointIds_.size());
     for (std::size_t i = 0; i < pointIds_.size(); ++i)
     {

@@ -174,6 +174,27 @@ private:
     std::vector<double> faceCentres0_;
     std::vector<double> cellCentres0_;
 
+    //- The cells (cellStart, cellFaces) reordered in Morton order of one
+    //  reference point each (order_ set)
+    void orderCells
+    (
+        std::vector<std::size_t>& cellStart,
+        std::vector<int>& cellFaces,
+        const double* points0
+    );
+
+    //- The points the cells use (faces cellFaces) numbered in the order of
+    //  first use (pointIds_ set, facePoints_ renumbered)
+    void renumberPoints(const std::vector<int>& cellFaces);
+
+    //- faceStart_ and facePoints_ made entries: each cell's faces
+    //  (cellFaces) stored with it, in order
+    void storeFacesWithCells(const std::vector<int>& cellFaces);
+
+    //- The reference data: points0_ from the reference points points0,
+    //  the general cells' faceCentres0_ and cellCentres0_
+    void setUpReference(const double* points0);
+
     //- Sort the cells (kind_, slot_, vertices_) and keep the general
     //  cells' entries only; cellFaces: entry numbers (the identity)
     void classify(std::vector<std::size_t>& cellStart);
