@@ -247,6 +247,17 @@ private:
         double* q
     ) const;
 
+    //- measureBlock's layout: each of the m cells at the stored positions
+    //  at[0 .. m) its place in its batch (s.first: a prism's or a
+    //  hexahedron's, else its first tetrahedron's), the batches sized
+    //  (inline: defined and used in CellQualityScanMeasure.cpp alone)
+    inline void placeBlock(const int* at, std::size_t m, Scratch& s) const;
+
+    //- measureBlock's input: those cells' prisms, hexahedra and tetrahedra
+    //  for the compact current points x into their places in s's batches
+    //  (inline: as placeBlock)
+    inline void fillBlock(const int* at, std::size_t m, const double* x, Scratch& s) const;
+
     //- The current points p into the compact copy (in parallel if
     //  parallel); the copy
     const double* gather(const double* p, bool parallel) const;

@@ -11,6 +11,82 @@
 namespace dcprbf
 {
 
+namespace
+{
+
+//- A tetrahedral cell of vertices v (CellShapes' order) into position t
+//  of batch: its edges from v[0], reference (points x0) and current (x)
+inline void setTetrahedron
+(
+    const int* v,
+    const double* x0,
+    const double* x,
+    detail::TetBatch& batch,
+    const std::size_t t
+)
+{
+    double e[3][3], f[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+        const std::size_t a = 3*std::size_t(v[k + 1]), o = 3*std::size_t(v[0]);
+        for (int d = 0; d < 3; ++d)
+        {
+            e[k][d] = x0[a + d] - x0[o + d];
+            f[k][d] = x[a + d] - x[o + d];
+        }
+    }
+    batch.set(t, e[0], e[1], e[2], f[0], f[1], f[2]);
+}
+
+
+//- The worst tetrahedron of the cell at position p of a measured
+//  detail::PrismBatch (NT = 18) or detail::HexBatch (24): the batch's own
+//  where exact, else its NT tetrahedra ranked here
+template<int NT, class Batch>
+inline detail::TetMeasures::Worst laneCellWorst
+(
+    const Batch& batch,
+    const std::size_t p,
+    const TetQuality::Metric metric
+)
+{
+    detail::TetMeasures::Worst worst(metric);
+    if (!batch.exact(p))
+    {
+        for (int t = 0; t < NT; ++t)
+        {
+            worst.add(batch.tetJ(p, t), batch.tetA2(p, t));
+        }
+    }
+    else
+    {
+        worst = batch.worst(p, metric);
+    }
+    return worst;
+}
+
+
+//- The worst of the tetrahedra t0 .. t1 - 1 of a measured detail::TetBatch
+//  (a cell's)
+inline detail::TetMeasures::Worst tetsWorst
+(
+    const detail::TetBatch& tets,
+    const std::size_t t0,
+    const std::size_t t1,
+    const TetQuality::Metric metric
+)
+{
+    detail::TetMeasures::Worst worst(metric);
+    for (std::size_t t = t0; t < t1; ++t)
+    {
+        worst.add(tets.J(t), tets.a2(t), tets.key(t));
+    }
+    return worst;
+}
+
+} // namespace
+
+
 std::size_t CellQualityScan::tetCount(const std::size_t g) const
 {
     return faceStart_[cellStart_[g + 1]] - faceStart_[cellStart_[g]];
@@ -79,20 +155,13 @@ void CellQualityScan::addTets
 }
 
 
-void CellQualityScan::measureBlock
+void CellQualityScan::placeBlock
 (
     const int* at,
     const std::size_t m,
-    const double* x,
-    Scratch& s,
-    double* q
+    Scratch& s
 ) const
 {
-    const double* x0 = points0_.data();
-
-    // The prisms into a detail::PrismBatch, the tetrahedra of the others into a
-    // detail::TetBatch (a tetrahedral cell: one, with its own A: every tetrahedron
-    // of its decomposition is an affine image of it)
     std::size_t nTets = 0, nPrisms = 0, nHexes = 0;
     for (std::size_t c = 0; c < m; ++c)
     {
@@ -114,6 +183,18 @@ void CellQualityScan::measureBlock
     s.tets.resize(nTets);
     s.prisms.resize(nPrisms);
     s.hexes.resize(nHexes);
+}
+
+
+void CellQualityScan::fillBlock
+(
+    const int* at,
+    const std::size_t m,
+    const double* x,
+    Scratch& s
+) const
+{
+    const double* x0 = points0_.data();
     for (std::size_t c = 0; c < m; ++c)
     {
         const std::size_t i = std::size_t(at[c]);
@@ -127,68 +208,50 @@ void CellQualityScan::measureBlock
         }
         else if (kind_[i] == tetrahedron)
         {
-            const int* v = &vertices_[std::size_t(slot_[i])];
-            double e[3][3], f[3][3];
-            for (int k = 0; k < 3; ++k)
-            {
-                const std::size_t a = 3*std::size_t(v[k + 1]), o = 3*std::size_t(v[0]);
-                for (int d = 0; d < 3; ++d)
-                {
-                    e[k][d] = x0[a + d] - x0[o + d];
-                    f[k][d] = x[a + d] - x[o + d];
-                }
-            }
-            s.tets.set(s.first[c], e[0], e[1], e[2], f[0], f[1], f[2]);
+            setTetrahedron(&vertices_[std::size_t(slot_[i])], x0, x, s.tets, s.first[c]);
         }
         else
         {
             addTets(std::size_t(slot_[i]), x, s.tets, s.first[c], s.buf);
         }
     }
+}
+
+
+void CellQualityScan::measureBlock
+(
+    const int* at,
+    const std::size_t m,
+    const double* x,
+    Scratch& s,
+    double* q
+) const
+{
+    // The prisms into a detail::PrismBatch, the hexahedra into a
+    // detail::HexBatch, the tetrahedra of the others into a
+    // detail::TetBatch (a tetrahedral cell: one, with its own A: every
+    // tetrahedron of its decomposition is an affine image of it)
+    placeBlock(at, m, s);
+    fillBlock(at, m, x, s);
 
     // Measured in SIMD lanes; each cell's worst (detail::TetMeasures::Worst), the
     // qualities in SIMD lanes again (detail::WorstBatch)
-    if (nTets) s.tets.measure(metric_, s.finals.wide());
-    if (nPrisms) s.prisms.measure(metric_, s.finals.wide());
-    if (nHexes) s.hexes.measure(metric_, s.finals.wide());
+    if (s.tets.size()) s.tets.measure(metric_, s.finals.wide());
+    if (s.prisms.size()) s.prisms.measure(metric_, s.finals.wide());
+    if (s.hexes.size()) s.hexes.measure(metric_, s.finals.wide());
     for (std::size_t c = 0; c < m; ++c)
     {
-        const std::size_t i = std::size_t(at[c]);
-        detail::TetMeasures::Worst worst(metric_);
-        if (kind_[i] == hexahedron)
-        {
-            if (!s.hexes.exact(s.first[c]))
-            {
-                for (int t = 0; t < 24; ++t)
-                {
-                    worst.add(s.hexes.tetJ(s.first[c], t), s.hexes.tetA2(s.first[c], t));
-                }
-            }
-            else
-            {
-                worst = s.hexes.worst(s.first[c], metric_);
-            }
-        }
-        else if (kind_[i] != prism)
-        {
-            const std::size_t t1 =
-                s.first[c] + (kind_[i] == tetrahedron ? 1 : tetCount(std::size_t(slot_[i])));
-            for (std::size_t t = s.first[c]; t < t1; ++t)
-            {
-                worst.add(s.tets.J(t), s.tets.a2(t), s.tets.key(t));
-            }
-        }
-        else if (!s.prisms.exact(s.first[c]))
-        {
-            for (int t = 0; t < 18; ++t)
-            {
-                worst.add(s.prisms.tetJ(s.first[c], t), s.prisms.tetA2(s.first[c], t));
-            }
-        }
-        else
-        {
-            worst = s.prisms.worst(s.first[c], metric_);
-        }
+        const std::size_t i = std::size_t(at[c]), p = s.first[c];
+        const detail::TetMeasures::Worst worst =
+            kind_[i] == hexahedron ? laneCellWorst<24>(s.hexes, p, metric_)
+          : kind_[i] == prism ? laneCellWorst<18>(s.prisms, p, metric_)
+          : tetsWorst
+            (
+                s.tets,
+                p,
+                p + (kind_[i] == tetrahedron ? 1 : tetCount(std::size_t(slot_[i]))),
+                metric_
+            );
         s.finals.add(worst, &q[order_[i]]);
     }
     s.finals.finish();
