@@ -50,6 +50,8 @@ std::vector<badInput> catalogue()
         {"UnknownKeyword", mv + st + r + "suportRadius 2;", "suportRadius"},
         {"MisspeltRequiredKeyword", mv + st + "suportRadius 0.5;", "Unknown keyword suportRadius"},
         {"PolynomialNotBool", mv + st + r + "polynomial maybe;", "polynomial"},
+        {"UnknownFarField", mv + st + r + "farField frozen;", "farField"},
+        {"FarFieldStillWithRotation", mv + st + r + "farField still; rotationInterpolation true;", "farField still has no effect with rotationInterpolation"},
         {"TPSWithoutPolynomial", mv + st + r + "function TPS; polynomial false;", "polynomial"},
         {"ControlPointsNotDict", mv + st + r + "controlPoints all;", "controlPoints"},
         {"UnknownSelection", mv + st + r + "controlPoints { selection fancy; }", "selection"},

@@ -38,7 +38,8 @@ Foam::dcpRBFInterpolation::dcpRBFInterpolation
     (
         context.evalPoints(), boundaryPoints_, controlPoints.block().blocks(),
         settings_.kernel().radius()
-    )
+    ),
+    farField_(context)
 {
     // Each distinct reference point's interior points
     {
@@ -193,6 +194,7 @@ Foam::scalar Foam::dcpRBFInterpolation::correct
     {
         correction_.apply(error, projection_, disp);
     }
+    farField_.apply(disp);
     prescribed_.constrainInterpolated();
 
     scalar err = 0;

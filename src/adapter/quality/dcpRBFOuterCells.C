@@ -10,6 +10,8 @@ License
 #include "dcpRBFScanOrder.H"
 #include "PointTree.hpp"
 
+#include <memory>
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dcpRBFOuterCells::dcpRBFOuterCells
@@ -21,7 +23,9 @@ Foam::dcpRBFOuterCells::dcpRBFOuterCells
     const scalar radius,
     const bool affineBeyond,
     const std::vector<char>& inRegion,
-    const dcprbf::TetQuality::Metric metric
+    const dcprbf::TetQuality::Metric metric,
+    const dcprbf::Points& moving,
+    const scalar movingReach
 )
 {
     // Per point: can a kernel, a condition or a correction move it other
@@ -30,12 +34,20 @@ Foam::dcpRBFOuterCells::dcpRBFOuterCells
     if (affineBeyond && sources.rows() > 0)
     {
         const dcprbf::PointTree tree(sources);
+        const bool farther = movingReach > radius && moving.rows() > 0;
+        std::unique_ptr<dcprbf::PointTree> movingTree;
+        if (farther)
+        {
+            movingTree.reset(new dcprbf::PointTree(moving));
+        }
         #pragma omp parallel for schedule(dynamic, 4096)
         for (label pointi = 0; pointi < mesh.nPoints(); ++pointi)
         {
             FixedList<scalar, 3> x;
             projection.toCore(points0[pointi], x.data());
-            near[pointi] = tree.anyWithin(x.data(), radius);
+            near[pointi] =
+                tree.anyWithin(x.data(), radius)
+             || (farther && movingTree->anyWithin(x.data(), movingReach));
         }
     }
     const labelListList& cellPoints = mesh.cellPoints();

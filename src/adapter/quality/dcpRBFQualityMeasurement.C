@@ -29,7 +29,8 @@ Foam::dcpRBFQualityMeasurement::dcpRBFQualityMeasurement
         ),
         context.settings().kernel().radius(),
         context.settings().kernel().compact() && !rotation,
-        context.settings().metric()
+        context.settings().metric(),
+        context.settings().movingReach()
     ),
     twoDPoints_(context.twoDPoints()),
     pointDisplacement_(context.pointDisplacement()),

@@ -103,7 +103,8 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     const dcprbf::Points& sources,
     const scalar radius,
     const bool affineBeyond,
-    const dcprbf::TetQuality::Metric metric
+    const dcprbf::TetQuality::Metric metric,
+    const scalar movingReach
 )
 {
     // The cells whose reference centre (the average of their points) is
@@ -141,7 +142,7 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
         new dcpRBFOuterCells
         (
             mesh, projection, points0, sources, radius, affineBeyond, inside,
-            metric
+            metric, movingPoints, movingReach
         )
     );
     nChecked_ = returnReduce(cells_.size() + outer_->nChecked(), sumOp<label>());

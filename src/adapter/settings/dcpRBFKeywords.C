@@ -118,6 +118,14 @@ const std::vector<K>& table()
         coeffs, "pointsPerThread", 250000, 0, unbounded,
         "one OpenMP thread per this many mesh points (0: all cores)"
     ),
+    K::choice
+    (
+        coeffs, "farField", "still", "still interpolated",
+        "with static patches: the displacement blended to zero between"
+        " supportRadius and twice it from the moving points, or the"
+        " interpolant's own"
+    ).defaultIs("`still` (compactly supported functions), `interpolated` (global ones)")
+     .alsoNeeds("`still` not with `rotationInterpolation true`"),
     K::onOff
     (
         coeffs, "rotationInterpolation", false,

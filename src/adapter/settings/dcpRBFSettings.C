@@ -265,6 +265,24 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
 }
 
 
+void Foam::dcpRBFSettings::readFarField(const dcpRBFDictReader& r)
+{
+    const dcpRBFKeyword& k = key("farField");
+    const bool given = r.dict().found(k.name);
+    const bool still = given ? r.getChoice(k) == 0 : kernel_.compact();
+    const bool rotation = r.getSwitch(key("rotationInterpolation"));
+    if (given && still && rotation)
+    {
+        FatalIOErrorInFunction(r.dict())
+            << "Keyword farField still has no effect with rotationInterpolation"
+            << " true: the bodies' blend decides how far the motion reaches"
+            << " (blendProfile, rotation { ... }). Allowed: farField"
+            << " interpolated, or no farField" << exit(FatalIOError);
+    }
+    stillFarField_ = still && !rotation && staticPatchIDs_.size();
+}
+
+
 dcprbf::RadialKernel Foam::dcpRBFSettings::readKernel
 (
     const dcpRBFDictReader& r,
@@ -397,6 +415,7 @@ Foam::dcpRBFSettings::dcpRBFSettings
     floorAction_ = r.getEnum(key("qualityFloorAction"), floorActionNames);
     guardIterations_ = r.getLabel(key("guardIterations"));
     boundaryCorrection_ = r.getSwitch(key("boundaryCorrection"));
+    readFarField(r);
     evaluationMemoryAuto_ = !dict.found("evaluationMemoryMB");
     evaluationMemoryMB_ = r.getLabel(key("evaluationMemoryMB"));
     pointsPerThread_ = r.getLabel(key("pointsPerThread"));
