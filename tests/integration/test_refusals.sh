@@ -125,3 +125,46 @@ EOT
     refusedWith "amiLeft" "cyclicAMI" "coupled"
     ! grep -q "^Time = " log.moveDynamicMesh || fail "refused only after a time step"
 }
+
+# Two blocks whose touching faces are two patches at the same place to
+# round-off (a baffle's two sides), both listed: refused at the start,
+# naming both patches (not "duplicate control points 670 and 671")
+test_coincidentPatches_refusedNamingThem() {
+    write_motionControls .
+    writeFile system/blockMeshDict dictionary <<'EOT'
+vertices
+(
+    (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 0.1) (1 0 0.1) (1 1 0.1) (0 1 0.1)
+    (1.0000000000001 0 0) (2 0 0) (2 1 0) (1.0000000000001 1 0)
+    (1.0000000000001 0 0.1) (2 0 0.1) (2 1 0.1) (1.0000000000001 1 0.1)
+);
+blocks
+(
+    hex (0 1 2 3 4 5 6 7) (5 5 1) simpleGrading (1 1 1)
+    hex (8 9 10 11 12 13 14 15) (4 4 1) simpleGrading (1 1 1)
+);
+boundary
+(
+    bottom { type wall; faces ((0 1 5 4) (8 9 13 12)); }
+    top { type wall; faces ((3 7 6 2) (11 15 14 10)); }
+    inlet { type patch; faces ((0 4 7 3)); }
+    outlet { type patch; faces ((9 10 14 13)); }
+    baffleLeft { type wall; faces ((1 2 6 5)); }
+    baffleRight { type wall; faces ((8 12 15 11)); }
+    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7) (8 11 10 9) (12 13 14 15)); }
+);
+EOT
+    run blockMesh
+    writeFile 0/pointDisplacement pointVectorField <<'EOT'
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    bottom { type uniformFixedValue; uniformValue (0 0.01 0); value uniform (0 0 0); }
+    "(top|inlet|outlet|baffle.*)" { type fixedValue; value uniform (0 0 0); }
+    frontAndBack { type empty; }
+}
+EOT
+    dynamicMeshDict "movingPatches (bottom); staticPatches (top inlet outlet baffleLeft baffleRight); supportRadius 0.5;"
+    refusedWith "baffleLeft" "baffleRight" "coincide"
+}

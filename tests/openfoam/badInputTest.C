@@ -51,6 +51,8 @@ std::vector<badInput> catalogue()
         {"MisspeltRequiredKeyword", mv + st + "suportRadius 0.5;", "Unknown keyword suportRadius"},
         {"PolynomialNotBool", mv + st + r + "polynomial maybe;", "polynomial"},
         {"UnknownFarField", mv + st + r + "farField frozen;", "farField"},
+        {"UnknownCellZone", mv + st + r + "cellZone nowhere;", "Keyword cellZone: no cellZone nowhere"},
+        {"CellZoneNotAName", mv + st + r + "cellZone (a b);", "cellZone"},
         {"FarFieldStillWithRotation", mv + st + r + "farField still; rotationInterpolation true;", "farField still has no effect with rotationInterpolation"},
         {"TPSWithoutPolynomial", mv + st + r + "function TPS; polynomial false;", "polynomial"},
         {"ControlPointsNotDict", mv + st + r + "controlPoints all;", "controlPoints"},

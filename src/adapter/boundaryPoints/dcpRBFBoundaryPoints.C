@@ -10,6 +10,8 @@ License
 #include "Pstream.H"
 #include "syncTools.H"
 #include "dcpRBFVersion.H"
+#include "PointTree.hpp"
+#include "PointSetChecks.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -33,7 +35,8 @@ void Foam::dcpRBFBoundaryPoints::markPoints
 (
     const polyMesh& mesh,
     const labelList& movingPatchIDs,
-    const labelList& staticPatchIDs
+    const labelList& staticPatchIDs,
+    const dcpRBFRegion& region
 )
 {
     labelList kind(mesh.nPoints(), label(interiorPoint));
@@ -53,11 +56,90 @@ void Foam::dcpRBFBoundaryPoints::markPoints
     }
     // A processor may hold a patch point without any of the patch's faces
     syncTools::syncPointList(mesh, kind, maxEqOp<label>(), label(interiorPoint));
+    // (the region's membership is synchronised already)
+    forAll(kind, pointi)
+    {
+        if (!region.point(pointi))
+        {
+            kind[pointi] = outsidePoint;
+        }
+        else if (region.border(pointi) && kind[pointi] != movingPoint)
+        {
+            kind[pointi] = staticPoint;
+        }
+    }
     kind_.setSize(kind.size());
     forAll(kind, pointi)
     {
         kind_[pointi] = pointKind(kind[pointi]);
     }
+}
+
+
+void Foam::dcpRBFBoundaryPoints::checkDistinct
+(
+    const polyMesh& mesh,
+    const labelList& movingPatchIDs,
+    const labelList& staticPatchIDs
+) const
+{
+    // (the core's test of a control set, PointSetChecks::checkDistinct)
+    Eigen::Index i = 0, j = 0;
+    const double ext = dcprbf::PointSetChecks::extent(points_);
+    if
+    (
+        points_.rows() < 2 || ext == 0
+     || !dcprbf::PointTree::findCoincident(points_, 1e-10*ext, i, j)
+    )
+    {
+        return;
+    }
+    // the patches of the two points, from the processors that hold them
+    const auto patchesOf = [&](const Eigen::Index g)
+    {
+        wordList names;
+        const globalIndex numbering(holders());
+        forAll(localPoints_, l)
+        {
+            if (concatToGlobal_[numbering.toGlobal(l)] != label(g)) continue;
+            for (const labelList* ids : {&movingPatchIDs, &staticPatchIDs})
+            {
+                for (const label patchi : *ids)
+                {
+                    const polyPatch& pp = mesh.boundaryMesh()[patchi];
+                    if (pp.meshPointMap().found(localPoints_[l]) && !names.found(pp.name()))
+                    {
+                        names.append(pp.name());
+                    }
+                }
+            }
+        }
+        List<wordList> all(Pstream::nProcs());
+        all[Pstream::myProcNo()] = names;
+        dcpRBFCompat::allGatherList(all);
+        wordList merged;
+        string text;
+        for (const wordList& l : all)
+        {
+            for (const word& w : l)
+            {
+                if (merged.found(w)) continue;
+                merged.append(w);
+                text += (text.empty() ? "" : " ") + w;
+            }
+        }
+        return text;
+    };
+    const string a(patchesOf(i));
+    const string b(patchesOf(j));
+    FatalErrorInFunction
+        << "Boundary points " << label(i) << " and " << label(j) << " of"
+        << " movingPatches and staticPatches coincide to round-off at "
+        << projection_.pointFromCore(points_.row(i).data())
+        << " without being the same point: one is on " << a.c_str()
+        << ", the other on " << b.c_str() << " (two patches at the same place, the"
+        << " two sides of an interface or of a baffle, say). List one of"
+        << " them, or merge them into one patch" << exit(FatalError);
 }
 
 
@@ -69,17 +151,27 @@ Foam::dcpRBFBoundaryPoints::dcpRBFBoundaryPoints
     const dcpRBFPlaneProjection& projection,
     const labelList& movingPatchIDs,
     const labelList& staticPatchIDs,
-    const pointField& points0
+    const pointField& points0,
+    const dcpRBFRegion* region
 )
 :
     projection_(projection)
 {
-    markPoints(mesh, movingPatchIDs, staticPatchIDs);
+    markPoints
+    (
+        mesh, movingPatchIDs, staticPatchIDs,
+        region ? *region : dcpRBFRegion::wholeMesh(mesh)
+    );
     DynamicList<label> labels;
     DynamicList<bool> localMoving;
     forAll(kind_, pointi)
     {
-        if (kind_[pointi] != interiorPoint && projection_.isControlCandidate(points0[pointi]))
+        const pointKind k = kind_[pointi];
+        if
+        (
+            (k == staticPoint || k == movingPoint)
+         && projection_.isControlCandidate(points0[pointi])
+        )
         {
             labels.append(pointi);
             localMoving.append(kind_[pointi] == movingPoint);
@@ -141,6 +233,7 @@ Foam::dcpRBFBoundaryPoints::dcpRBFBoundaryPoints
     {
         moving_[concatToGlobal_[k]] = moving_[concatToGlobal_[k]] || isMoving[k];
     }
+    checkDistinct(mesh, movingPatchIDs, staticPatchIDs);
 }
 
 

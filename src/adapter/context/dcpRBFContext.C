@@ -13,6 +13,7 @@ License
 Foam::dcpRBFContext::dcpRBFContext
 (
     const polyMesh& mesh,
+    const dictionary& solverDict,
     const dictionary& coeffs,
     pointVectorField& pointDisplacement,
     const pointField& points0,
@@ -25,11 +26,12 @@ Foam::dcpRBFContext::dcpRBFContext
     points0_(points0),
     debug_(debug),
     settings_(coeffs, mesh, points0),
+    region_(mesh, coeffs, solverDict),
     projection_(mesh),
     boundaryPoints_
     (
         mesh, projection_, settings_.movingPatchIDs(),
-        settings_.staticPatchIDs(), points0
+        settings_.staticPatchIDs(), points0, &region_
     ),
     evalPoints_(projection_.toCore(points0)),
     distinct_(evalPoints_),

@@ -25,6 +25,7 @@ Foam::dcpRBFPrescribedDisplacement::dcpRBFPrescribedDisplacement
     settings_(context.settings()),
     projection_(context.projection()),
     boundaryPoints_(context.boundaryPoints()),
+    region_(context.region()),
     pointDisplacement_(context.pointDisplacement()),
     slipPatches_(pointDisplacement_, context.points0()),
     slipCorrection_
@@ -88,6 +89,20 @@ void Foam::dcpRBFPrescribedDisplacement::checkPatches(const dictionary& dict)
     forAll(patches, patchi)
     {
         const polyPatch& pp = patches[patchi];
+        if (!region_.touches(patchi))
+        {
+            // outside the region: its points stay where they are
+            if (settings_.movingPatchIDs().found(patchi))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Keyword movingPatches: patch " << pp.name() << " is"
+                    << " outside the region dcpRBF moves ("
+                    << region_.source().c_str() << "): its points would not"
+                    << " move. List the patches of the region's cells"
+                    << exit(FatalIOError);
+            }
+            continue;
+        }
         if (settings_.movingPatchIDs().found(patchi))
         {
             if (!conditions[patchi].fixesValue())

@@ -39,7 +39,7 @@ void Foam::dcpRBFMotionSolver::construct()
     (
         new dcpRBFContext
         (
-            mesh(), coeffDict(), pointDisplacement_, points0(), debug
+            mesh(), *this, coeffDict(), pointDisplacement_, points0(), debug
         )
     );
     const dcpRBFContext& c = *context_;
@@ -59,6 +59,8 @@ void Foam::dcpRBFMotionSolver::construct()
     (
         new dcpRBFInterpolation(c, *controlPoints_, *rotation_, *prescribed_)
     );
+    frame_.reset(new dcpRBFFrame(c));
+    cellDisplacement_.reset(new dcpRBFCellDisplacement(pointDisplacement_));
     swapRule_ = dcpRBFSwapRule::New
     (
         c, *controlPoints_, *quality_, *interpolation_
@@ -248,6 +250,7 @@ void Foam::dcpRBFMotionSolver::solve()
     {
         quality_->changed();
     }
+    cellDisplacement_->update();
     timer_->split(&part::points);
     if (!inNewPoints_)
     {
@@ -260,6 +263,7 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::curPoints() const
 {
     tmp<pointField> tcurPoints(new pointField(points0().size()));
     quality_->currentPoints(tcurPoints.ref());
+    frame_->place(tcurPoints.ref());
     return tcurPoints;
 }
 
@@ -282,10 +286,20 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
     const pointField& measuredPoints = quality_->lastPoints();
     const bool measured =
         quality_->measured() && measuredPoints.size() == points0().size();
-    tmp<pointField> tpoints
-    (
-        measured ? tmp<pointField>(measuredPoints) : curPoints()
-    );
+    tmp<pointField> tpoints;
+    if (!measured)
+    {
+        tpoints = curPoints();
+    }
+    else if (frame_->places())
+    {
+        tpoints = tmp<pointField>(new pointField(measuredPoints));
+        frame_->place(tpoints.ref());
+    }
+    else
+    {
+        tpoints = tmp<pointField>(measuredPoints);
+    }
     nReusedPoints_ += measured;
     timer_->split(&dcpRBFStepTimer::times::points);
     writeLog();

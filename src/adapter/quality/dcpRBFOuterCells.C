@@ -22,7 +22,7 @@ Foam::dcpRBFOuterCells::dcpRBFOuterCells
     const dcprbf::Points& sources,
     const scalar radius,
     const bool affineBeyond,
-    const std::vector<char>& inRegion,
+    const std::vector<char>& skip,
     const dcprbf::TetQuality::Metric metric,
     const dcprbf::Points& moving,
     const scalar movingReach
@@ -55,7 +55,7 @@ Foam::dcpRBFOuterCells::dcpRBFOuterCells
     label firstAffine = -1;
     for (label celli = 0; celli < mesh.nCells(); ++celli)
     {
-        if (inRegion[celli])
+        if (skip[celli])
         {
             continue;
         }

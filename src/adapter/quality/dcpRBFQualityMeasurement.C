@@ -30,7 +30,8 @@ Foam::dcpRBFQualityMeasurement::dcpRBFQualityMeasurement
         context.settings().kernel().radius(),
         context.settings().kernel().compact() && !rotation,
         context.settings().metric(),
-        context.settings().movingReach()
+        context.settings().movingReach(),
+        &context.region()
     ),
     twoDPoints_(context.twoDPoints()),
     pointDisplacement_(context.pointDisplacement()),

@@ -104,7 +104,8 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     const scalar radius,
     const bool affineBeyond,
     const dcprbf::TetQuality::Metric metric,
-    const scalar movingReach
+    const scalar movingReach,
+    const dcpRBFRegion* region
 )
 {
     // The cells whose reference centre (the average of their points) is
@@ -118,10 +119,12 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
         #pragma omp parallel for schedule(dynamic, 4096)
         for (label celli = 0; celli < mesh.nCells(); ++celli)
         {
-            inside[celli] = tree.anyWithin
-            (
-                dcpRBFScanOrder::centre(cellPoints, projection, points0, celli).data(), radius
-            );
+            inside[celli] =
+                (!region || region->cell(celli))
+             && tree.anyWithin
+                (
+                    dcpRBFScanOrder::centre(cellPoints, projection, points0, celli).data(), radius
+                );
         }
     }
     std::vector<label> found;
@@ -137,11 +140,21 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     }
     quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
 
+    // the others checked: neither the region's nor outside the cells dcpRBF
+    // moves
+    std::vector<char> skip(inside);
+    if (region)
+    {
+        for (label celli = 0; celli < mesh.nCells(); ++celli)
+        {
+            skip[celli] = skip[celli] || !region->cell(celli);
+        }
+    }
     outer_.reset
     (
         new dcpRBFOuterCells
         (
-            mesh, projection, points0, sources, radius, affineBeyond, inside,
+            mesh, projection, points0, sources, radius, affineBeyond, skip,
             metric, movingPoints, movingReach
         )
     );

@@ -344,6 +344,23 @@ Foam::string Foam::dcpRBFDictReader::asWritten
 }
 
 
+Foam::word Foam::dcpRBFDictReader::getName(const dcpRBFKeyword& k) const
+{
+    const token* t = single(k.name, "a name, e.g. " + word(k.name) + " wing");
+    if (!t)
+    {
+        return word();
+    }
+    if (!t->isWord())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << k.name << " must be a name, e.g. " << k.name
+            << " wing; got " << *t << exit(FatalIOError);
+    }
+    return t->wordToken();
+}
+
+
 Foam::scalar Foam::dcpRBFDictReader::getLength
 (
     const dcpRBFKeyword& k,

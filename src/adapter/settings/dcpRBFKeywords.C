@@ -56,6 +56,12 @@ const std::vector<K>& table()
     ),
     K::other
     (
+        coeffs, "cellZone", type::name, "the motion solver dictionary's `cellZone` or `cellSet`; none: the whole mesh",
+        "an existing cellZone; the same as the motion solver dictionary's if that names one",
+        "the region moved and checked; points outside it stay where they are"
+    ),
+    K::other
+    (
         coeffs, "supportRadius", type::length, "required",
         "> 0, from 1e-9 to 1e9 times the mesh's bounding-box diagonal, and"
         " reaching at least one cell centre from the moving patches",
@@ -126,6 +132,13 @@ const std::vector<K>& table()
         " interpolant's own"
     ).defaultIs("`still` (compactly supported functions), `interpolated` (global ones)")
      .alsoNeeds("`still` not with `rotationInterpolation true`"),
+    K::other
+    (
+        coeffs, "frame", type::subDict, "none (the region's frame is still)",
+        "`solidBodyMotionFunction` and its coefficients, as OpenFOAM's"
+        " solidBody motion solver takes them",
+        "the region moves as this solid body, dcpRBF morphs it on top"
+    ),
     K::onOff
     (
         coeffs, "rotationInterpolation", false,

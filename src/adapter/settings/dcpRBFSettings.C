@@ -165,27 +165,7 @@ void Foam::dcpRBFSettings::checkPatchLists
                 << exit(FatalIOError);
         }
     }
-    // Patches whose two sides must move alike, listed or not: refused
-    // here, before anything is built from the boundary (cyclicAMI's
-    // coupled() is false: its geometry is not coupled, its fields are)
-    for (const polyPatch& pp : patches)
-    {
-        const bool periodic =
-            (pp.coupled() && !isA<processorPolyPatch>(pp))
-         || isA<processorCyclicPolyPatch>(pp);
-        if (periodic || isA<cyclicAMIPolyPatch>(pp))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Patch " << pp.name() << " is of type " << pp.type()
-                << ": dcpRBF does not move the points of coupled patches"
-                << " (cyclic, cyclicAMI, cyclicACMI, ...) consistently on"
-                << " both sides, listed or not. Use a mesh without coupled"
-                << " patches (e.g. a single region without sliding or"
-                << " periodic interfaces), or another motion solver"
-                << " (solidBody for a rotating zone)"
-                << exit(FatalIOError);
-        }
-    }
+    // (coupled patches in the region: refused by dcpRBFRegion)
     for (const word keyword : {"movingPatches", "staticPatches"})
     {
         const labelList& ids =
