@@ -1,6 +1,6 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
-# Integration tests: the pitchingAirfoil2D and sixDoFAirfoil2D tutorials,
+# Integration tests: the pitchingAirfoil2D, sixDoFAirfoil2D and relativeMotion2D tutorials,
 # shortened through their Allrun options, each run on a copy of the tutorials
 # (tutorials/common and the mesh scripts they share) in the test folder.
 #
@@ -73,4 +73,85 @@ test_tutorials_sixDoFAirfoil2D_short_bothSolversMeshOk() {
     checkMeshAllOk "$c/stock" || return 1
     grep -A8 "^sixDoFAirfoil2D:" "$c/log.python3.plots" || fail "no trajectory summary: $(tail -5 "$c/log.python3.plots")" || return 1
     [ -f "$c/images/trajectory.png" ] || fail "no images/trajectory.png"
+}
+
+# relativeMotion2D (dcpRBF on a region, the cellZone rotor, as the zone's
+# solver of dynamicMultiMotionSolverFvMesh, in a rotating frame, behind a
+# cyclicAMI), shortened to 0.5 s (20 steps: a quarter turn). Its check
+# (checkMotion.py) must say ok on every line: the stator does not move at
+# all, the rotor's side of the interface is the solid-body rotation (1e-12),
+# the hub moves in the frame, the AMI's weights sum to 1 (1 %), checkMesh
+# passes at every written time, no cell inverts. The same run on 2
+# processors (the decomposition cutting the rotor and the interface) equals
+# the serial one (1e-10), and a restart at 0.25 s the uninterrupted one
+# (1e-14).
+
+# relativeMotion2D ENDTIME: the tutorial's case in ./case, meshed, its end
+# time ENDTIME, 0/ restored
+relativeMotion2D() {
+    mkdir -p case
+    cp -r "$top/tutorials/relativeMotion2D/." case/ || return 1
+    rm -rf case/images
+    (
+        cd case || exit 1
+        ./Allclean > /dev/null 2>&1
+        echo "endTime $1;" > system/endTime
+        run blockMesh || exit 1
+        cp -r 0.orig 0
+    ) || return 1
+}
+
+test_region_relativeMotion2D_statorStillAMIIntact() {
+    mkdir -p tutorials
+    cp -r "$top/tutorials/relativeMotion2D" tutorials/ || return 1
+    rm -rf tutorials/relativeMotion2D/images
+    (cd tutorials/relativeMotion2D && ./Allclean > /dev/null 2>&1)
+    tutorials/relativeMotion2D/Allrun -endTime 0.5 > log.Allrun 2>&1 \
+        || fail "Allrun failed: $(tail -n 5 log.Allrun)"
+    local check=tutorials/relativeMotion2D/log.python3.check
+    [ -f "$check" ] || fail "no check: $(tail -n 5 log.Allrun)"
+    cat "$check"
+    [ "$(countLines ': ok$' "$check")" -eq 6 ] || fail "the check failed: $(grep -v ': ok$' "$check")"
+    grep -q "dcpRBF: region cellZone rotor: 480 cells" tutorials/relativeMotion2D/log.moveDynamicMesh \
+        || fail "no region in the log"
+}
+
+test_region_relativeMotion2D_parallelEqualsSerial() {
+    relativeMotion2D 0.5 || return 1
+    (cd case && run moveDynamicMesh) || fail "serial run failed"
+    mkdir -p par
+    cp -r case/constant case/system case/0 par/
+    writeFile par/system/decomposeParDict dictionary <<'EOT'
+numberOfSubdomains 2;
+method simple;
+coeffs { n (2 1 1); }
+EOT
+    (
+        cd par || exit 1
+        run decomposePar || exit 1
+        OMP_NUM_THREADS=1 run mpirun -np 2 moveDynamicMesh -parallel || exit 1
+        run reconstructPar -latestTime || exit 1
+    ) || fail "parallel run failed (see par/log.*)"
+    pointsAgree case/0.5/polyMesh/points par/0.5/polyMesh/points 1e-10 "serial vs parallel at t = 0.5" || return 1
+}
+
+test_region_relativeMotion2D_restartEqualsUninterrupted() {
+    relativeMotion2D 0.5 || return 1
+    cp -r case restart
+    (cd case && run moveDynamicMesh) || fail "uninterrupted run failed"
+    (
+        cd restart || exit 1
+        echo "endTime 0.25;" > system/endTime
+        run moveDynamicMesh || exit 1
+        echo "endTime 0.5;" > system/endTime
+        rm -f log.moveDynamicMesh
+        run moveDynamicMesh || exit 1
+        grep -q "restarting with" log.moveDynamicMesh || exit 2
+    )
+    case $? in
+    (0) ;;
+    (2) fail "the restart did not read the control set's state" ;;
+    (*) fail "restarted run failed (see restart/log.*)" ;;
+    esac
+    pointsAgree case/0.5/polyMesh/points restart/0.5/polyMesh/points 1e-14 "uninterrupted vs restarted at t = 0.5" || return 1
 }
