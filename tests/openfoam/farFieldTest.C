@@ -85,6 +85,10 @@ TEST_P(FarField, StillBeyondTwiceTheRadiusWhatTheInterpolantGivesWithin)
         }
     }
     ASSERT_GT(nWithin, 0);
+    std::cout
+        << controlPoints << " beyond 2 supportRadius, largest motion over the"
+        << " bump's: farField still " << farStill/bump << ", interpolated "
+        << farFree/bump << std::endl;
     EXPECT_LE(farStill, 1e-4*bump) << controlPoints;
     // the case's premise: the interpolant's own far field moves
     EXPECT_GT(farFree, 1e-3*bump) << controlPoints;
