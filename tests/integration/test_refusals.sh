@@ -82,10 +82,10 @@ test_calculatedMovingPatch_refused() {
     refusedWith "movingPatches" "bottom" "calculated"
 }
 
-# A channel of two blocks joined by a cyclicAMI pair (coupled() is false for
-# AMI: its geometry is not coupled, its fields are), in neither list:
-# refused at the start, naming the patch
-test_cyclicAMI_refusedNamingThePatch() {
+# amiChannel: a channel of two blocks joined by a cyclicAMI pair (coupled()
+# is false for AMI: its geometry is not coupled, its fields are), the bottom
+# wall lifted
+amiChannel() {
     write_motionControls .
     writeFile system/blockMeshDict dictionary <<'EOT'
 vertices
@@ -121,6 +121,11 @@ boundaryField
     frontAndBack { type empty; }
 }
 EOT
+}
+
+# The AMI in neither list: refused at the start, naming the patch
+test_cyclicAMI_refusedNamingThePatch() {
+    amiChannel || return 1
     dynamicMeshDict "movingPatches (bottom); staticPatches (top inlet outlet); supportRadius 0.5;"
     refusedWith "amiLeft" "cyclicAMI" "coupled"
     ! grep -q "^Time = " log.moveDynamicMesh || fail "refused only after a time step"
@@ -167,4 +172,54 @@ boundaryField
 EOT
     dynamicMeshDict "movingPatches (bottom); staticPatches (top inlet outlet baffleLeft baffleRight); supportRadius 0.5;"
     refusedWith "baffleLeft" "baffleRight" "coincide"
+}
+
+# A region (cellZone lower, the lower of two stacked blocks) whose moving
+# patch (the lower half of the left wall) ends on the region's border: its
+# end points are shared with the upper block's cells, which dcpRBF neither
+# moves nor checks: refused, naming the patch (not moved only in part)
+test_movingPatchOnTheRegionsBorder_refused() {
+    write_motionControls .
+    writeFile system/blockMeshDict dictionary <<'EOT'
+vertices
+(
+    (0 0 0) (1 0 0) (1 0.5 0) (0 0.5 0) (0 0 0.1) (1 0 0.1) (1 0.5 0.1) (0 0.5 0.1)
+    (0 1 0) (1 1 0) (0 1 0.1) (1 1 0.1)
+);
+blocks
+(
+    hex (0 1 2 3 4 5 6 7) lower (6 3 1) simpleGrading (1 1 1)
+    hex (3 2 9 8 7 6 11 10) (6 3 1) simpleGrading (1 1 1)
+);
+boundary
+(
+    bottom { type wall; faces ((0 1 5 4)); }
+    top { type wall; faces ((8 10 11 9)); }
+    leftLower { type wall; faces ((0 4 7 3)); }
+    leftUpper { type wall; faces ((3 7 10 8)); }
+    right { type wall; faces ((1 2 6 5) (2 9 11 6)); }
+    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7) (3 8 9 2) (7 6 11 10)); }
+);
+EOT
+    run blockMesh
+    writeFile 0/pointDisplacement pointVectorField <<'EOT'
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    leftLower { type uniformFixedValue; uniformValue (0.01 0 0); value uniform (0 0 0); }
+    "(bottom|top|leftUpper|right)" { type fixedValue; value uniform (0 0 0); }
+    frontAndBack { type empty; }
+}
+EOT
+    dynamicMeshDict "movingPatches (leftLower); staticPatches (bottom right); supportRadius 0.5; cellZone lower;"
+    refusedWith "movingPatches" "leftLower" "crosses the border"
+}
+
+# A region's side of a sliding interface is static by itself: listing the
+# cyclicAMI patch is refused, naming the keyword and saying so
+test_cyclicAMIListed_refused() {
+    amiChannel || return 1
+    dynamicMeshDict "movingPatches (bottom); staticPatches (top inlet outlet amiLeft); supportRadius 0.5;"
+    refusedWith "staticPatches" "amiLeft" "static without being listed"
 }

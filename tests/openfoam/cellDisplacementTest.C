@@ -149,6 +149,27 @@ TEST(CellDisplacement, ReadWithItsConditionsFixedValueKeepsTheAdaptersValues)
     EXPECT_EQ(err, 0);
 }
 
+TEST(CellDisplacement, ConstraintPatchWithAPointConditionOfItsOwn)
+{
+    // a constraint patch whose point condition no finite-volume field has
+    // (oscillatingDisplacement on a symmetry plane, like
+    // solidBodyMotionDisplacement on an overset patch): its own type
+    testCase c(3, 4, coeffs, "symmetryPlane");
+    c.write
+    (
+        "0/pointDisplacement", "pointVectorField",
+        "dimensions [0 1 0 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+        "boundaryField\n{\n"
+        "    \"(left|right|top|bottom)\" { type fixedValue; value uniform (0 0 0); }\n"
+        "    \"(front|back)\" { patchType symmetryPlane; type oscillatingDisplacement;"
+        " amplitude (0 0 0); omega 1; value uniform (0 0 0); }\n}\n"
+    );
+    autoPtr<motionSolver> ms(select(c));
+    const volVectorField& cd = c.mesh().lookupObject<volVectorField>("cellDisplacement");
+    const label front = c.mesh().boundaryMesh().findPatchID("front");
+    EXPECT_EQ(cd.boundaryField()[front].type(), "symmetryPlane");
+}
+
 } // namespace
 
 // ************************************************************************* //

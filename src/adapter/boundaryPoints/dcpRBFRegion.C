@@ -125,10 +125,12 @@ void Foam::dcpRBFRegion::markPoints(const labelUList& cells)
     syncTools::syncPointList(mesh_, out, maxEqOp<label>(), label(0));
     points_.resize(mesh_.nPoints());
     border_.resize(mesh_.nPoints());
+    shared_.resize(mesh_.nPoints());
     forAll(in, pointi)
     {
         points_.set(pointi, in[pointi] > 0);
         border_.set(pointi, in[pointi] > 0 && out[pointi] > 0);
+        shared_.set(pointi, in[pointi] > 0 && out[pointi] > 0);
     }
 }
 
@@ -235,13 +237,16 @@ Foam::dcpRBFRegion::dcpRBFRegion
     else
     {
         border_.resize(mesh_.nPoints());
+        shared_.resize(mesh_.nPoints());
     }
     checkCoupled(coeffs);
     if (!whole())
     {
         Info<< "dcpRBF: region " << source_.c_str() << ": " << nCells()
             << " cells, " << nPoints() << " points, " << nBorder()
-            << " of them on its border (static)" << endl;
+            << " of them on its border (static; " << nShared()
+            << " shared with cells outside it, which stay where the mesh"
+            << " has them)" << endl;
     }
 }
 
@@ -249,7 +254,8 @@ Foam::dcpRBFRegion::dcpRBFRegion
 Foam::dcpRBFRegion::dcpRBFRegion(const polyMesh& mesh)
 :
     mesh_(mesh),
-    border_(mesh.nPoints())
+    border_(mesh.nPoints()),
+    shared_(mesh.nPoints())
 {}
 
 
@@ -282,6 +288,12 @@ Foam::label Foam::dcpRBFRegion::nPoints() const
 Foam::label Foam::dcpRBFRegion::nBorder() const
 {
     return returnReduce(label(border_.count()), sumOp<label>());
+}
+
+
+Foam::label Foam::dcpRBFRegion::nShared() const
+{
+    return returnReduce(label(shared_.count()), sumOp<label>());
 }
 
 

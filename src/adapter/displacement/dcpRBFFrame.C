@@ -32,11 +32,27 @@ Foam::dcpRBFFrame::dcpRBFFrame(const dcpRBFContext& context)
         (
             coeffs.subDict("frame"), mesh_.time()
         );
+        if (region_.nShared() > 0)
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Keyword frame: the region (" << region_.source().c_str()
+                << ") shares " << region_.nShared() << " points with cells"
+                << " outside it, which its solid-body motion would tear"
+                << " from them. A region that moves as a solid body is"
+                << " bounded by a sliding interface (cyclicAMI) or by its own"
+                << " walls; or give the whole of the moving cells as its"
+                << " cellZone" << exit(FatalIOError);
+        }
     }
+    // where the mesh has them: outside the region, and the border points
+    // cells outside it share (another solver's, where one moves them)
     DynamicList<label> outside;
     for (label pointi = 0; pointi < mesh_.nPoints(); ++pointi)
     {
-        if (!region_.point(pointi)) outside.append(pointi);
+        if (!region_.point(pointi) || region_.shared(pointi))
+        {
+            outside.append(pointi);
+        }
     }
     outside_.transfer(outside);
     places_ = moves() || returnReduce(outside_.size() > 0, orOp<bool>());

@@ -105,6 +105,22 @@ void Foam::dcpRBFPrescribedDisplacement::checkPatches(const dictionary& dict)
         }
         if (settings_.movingPatchIDs().found(patchi))
         {
+            bool crosses = false;
+            for (const label pointi : pp.meshPoints())
+            {
+                crosses = crosses || !region_.point(pointi) || region_.shared(pointi);
+            }
+            if (returnReduce(crosses, orOp<bool>()))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Keyword movingPatches: patch " << pp.name() << " crosses"
+                    << " the border of the region dcpRBF moves ("
+                    << region_.source().c_str() << "): its points there are"
+                    << " shared with cells outside the region, which dcpRBF"
+                    << " neither moves nor checks. Make the cellZone hold every"
+                    << " cell of the moving patch's faces and their neighbours"
+                    << exit(FatalIOError);
+            }
             if (!conditions[patchi].fixesValue())
             {
                 FatalIOErrorInFunction(dict)

@@ -14,14 +14,16 @@ License
 
 Foam::wordList Foam::dcpRBFCellDisplacement::boundaryTypes() const
 {
-    const pointVectorField::Boundary& bf = pointDisplacement_.boundaryField();
+    // (a constraint patch's own type, not its point condition's: that may
+    // be a point condition alone, solidBodyMotionDisplacement on an overset
+    // patch say, which no finite-volume field has)
     const polyBoundaryMesh& patches = pointDisplacement_.mesh().mesh().boundaryMesh();
     wordList types(patches.size(), cellMotionFvPatchVectorField::typeName);
     forAll(patches, patchi)
     {
         if (polyPatch::constraintType(patches[patchi].type()))
         {
-            types[patchi] = bf[patchi].type();
+            types[patchi] = patches[patchi].type();
         }
     }
     return types;

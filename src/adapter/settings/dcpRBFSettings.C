@@ -173,12 +173,14 @@ void Foam::dcpRBFSettings::checkPatchLists
         for (const label patchi : ids)
         {
             const polyPatch& pp = patches[patchi];
-            if (isA<emptyPolyPatch>(pp) || pp.coupled())
+            if (isA<emptyPolyPatch>(pp) || pp.coupled() || isA<cyclicAMIPolyPatch>(pp))
             {
                 FatalIOErrorInFunction(dict)
                     << "Keyword " << keyword << ": patch " << pp.name()
                     << " is of type " << pp.type() << ". Allowed: wall,"
-                    << " patch and other non-empty, non-coupled patches"
+                    << " patch and other non-empty, non-coupled patches (a"
+                    << " region's side of a sliding interface is static"
+                    << " without being listed: cellZone)"
                     << exit(FatalIOError);
             }
         }
