@@ -4,7 +4,9 @@
 
 # parallelEqualsSerial TIME [DECOMPOSITION]: run moveDynamicMesh serial
 # (here) and on 2 processors (in par/), reconstruct, compare the points at
-# TIME: 1e-10 relative to the domain size. DECOMPOSITION: the method entries
+# TIME: 1e-10 relative to the domain size, and the reconstructed
+# cellDisplacement (cell and boundary values: 1e-10 relative to the
+# displacements' range). DECOMPOSITION: the method entries
 # of decomposeParDict (default: simple, split in x)
 parallelEqualsSerial() {
     local time="$1" decomposition='method simple; coeffs { n (2 1 1); }'
@@ -23,7 +25,11 @@ EOT
         run reconstructPar -time "$time" || exit 1
     ) || fail "parallel run failed (see par/log.*)" || return 1
     pointsAgree "$time/polyMesh/points" "par/$time/polyMesh/points" 1e-10 \
-        "serial vs parallel at t = $time"
+        "serial vs parallel at t = $time" || return 1
+    [ -f "$time/cellDisplacement" ] && [ -f "par/$time/cellDisplacement" ] \
+        || fail "no cellDisplacement at t = $time, serial or reconstructed" || return 1
+    pointsAgree "$time/cellDisplacement" "par/$time/cellDisplacement" 1e-10 \
+        "cellDisplacement, serial vs parallel at t = $time"
 }
 
 test_airfoil2D_parallelEqualsSerial() {

@@ -84,7 +84,7 @@ test_calculatedMovingPatch_refused() {
 
 # amiChannel: a channel of two blocks joined by a cyclicAMI pair (coupled()
 # is false for AMI: its geometry is not coupled, its fields are), the bottom
-# wall lifted
+# wall lifted; the left block is the cellZone left
 amiChannel() {
     write_motionControls .
     writeFile system/blockMeshDict dictionary <<'EOT'
@@ -95,7 +95,7 @@ vertices
 );
 blocks
 (
-    hex (0 1 2 3 4 5 6 7) (5 5 1) simpleGrading (1 1 1)
+    hex (0 1 2 3 4 5 6 7) left (5 5 1) simpleGrading (1 1 1)
     hex (8 9 10 11 12 13 14 15) (4 4 1) simpleGrading (1 1 1)
 );
 boundary
@@ -217,9 +217,10 @@ EOT
 }
 
 # A region's side of a sliding interface is static by itself: listing the
-# cyclicAMI patch is refused, naming the keyword and saying so
+# cyclicAMI patch is refused, naming the keyword and saying so (without a
+# region, the whole mesh holds both sides: refused as in the test above)
 test_cyclicAMIListed_refused() {
     amiChannel || return 1
-    dynamicMeshDict "movingPatches (bottom); staticPatches (top inlet outlet amiLeft); supportRadius 0.5;"
+    dynamicMeshDict "movingPatches (bottom); staticPatches (top inlet amiLeft); supportRadius 0.5; cellZone left;"
     refusedWith "staticPatches" "amiLeft" "static without being listed"
 }

@@ -241,6 +241,23 @@ test_restart_otherMaxPoints_selectsAnewSaysSo() {
         || fail "more than maxPoints 12 control points after the restart"
 }
 
+# Another region (a cellZone now): selected anew, saying so
+test_restart_otherRegion_selectsAnewSaysSo() {
+    modeRun2D "selection greedy; tolerance 1e-2;" || return 1
+    writeFile system/topoSetDict dictionary <<'EOT'
+actions
+(
+    { name near; type cellSet; action new; source boxToCell; sourceInfo { box (-2.5 -2.5 -10) (3.5 2.5 10); } }
+    { name near; type cellZoneSet; action new; source setToCellZone; sourceInfo { set near; } }
+);
+EOT
+    run topoSet || return 1
+    restartWith "$(airfoilCoeffs "selection greedy; tolerance 1e-2;") cellZone near;"
+    warningText "was selected with other settings" 2 "no warning of the changed settings" log.moveDynamicMesh.1
+    grep -q "region (none) -> cellZone near" warning || fail "the warning does not say what changed: $(head -c 400 warning)"
+    grep -q "dcpRBF: region cellZone near" log.moveDynamicMesh.1 || fail "no region in the restarted run"
+}
+
 # Other patches (a static patch left out): no index error, selected anew
 test_restart_otherPatches_selectsAnewSaysSo() {
     modeRun2D "selection greedy; tolerance 1e-2;"

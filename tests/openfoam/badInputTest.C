@@ -53,6 +53,7 @@ std::vector<badInput> catalogue()
         {"UnknownFarField", mv + st + r + "farField frozen;", "farField"},
         {"UnknownCellZone", mv + st + r + "cellZone nowhere;", "Keyword cellZone: no cellZone nowhere"},
         {"CellZoneNotAName", mv + st + r + "cellZone (a b);", "cellZone"},
+        {"FarFieldStillWithoutStaticPoints", mv + "staticPatches ();" + r + "farField still;", "farField still has no effect without static points"},
         {"FarFieldStillWithRotation", mv + st + r + "farField still; rotationInterpolation true;", "farField still has no effect with rotationInterpolation"},
         {"TPSWithoutPolynomial", mv + st + r + "function TPS; polynomial false;", "polynomial"},
         {"ControlPointsNotDict", mv + st + r + "controlPoints all;", "controlPoints"},

@@ -10,7 +10,8 @@ Description
     zone as dcpRBF's region (cellZone in dcpRBFCoeffs, or in the motion
     solver's dictionary as dynamicMultiMotionSolverFvMesh gives it) the
     points outside the zone and those on its border do not move at all, the
-    zone's mesh is valid and only its cells are checked. With a frame (a
+    zone's mesh is valid and only its cells are checked; the border makes
+    the far field still without staticPatches. With a frame (a
     solid-body motion) the region's new points are the frame's transform of
     the points without it, the others stay. A moving patch outside the
     region, a zone that does not exist and two regions are refused, naming
@@ -231,6 +232,46 @@ TEST(Region, OutsideStaysWhereTheMeshHasIt)
         }
     }
     EXPECT_GT(nShared, 0);
+}
+
+
+TEST(Region, BorderMakesTheFarFieldStill)
+{
+    // no staticPatches: the region's border is static, so the far field is
+    // still by default (nothing beyond twice supportRadius from the moving
+    // wall moves); without the weight the interpolant's polynomial would
+    // move the zone's middle (the bump's lift against the still border)
+    const scalar R = 0.1;
+    testCase c
+    (
+        2, 20,
+        "movingPatches (bottom); staticPatches (); supportRadius "
+      + std::to_string(R) + "; cellZone lower;"
+    );
+    addZone(c.mesh(), "lower", 0.5);
+    autoPtr<motionSolver> ms(select(c));
+    const pointField p0(c.mesh().points());
+    const pointField p(bumpStep(c, ms()));
+    scalar far = 0;
+    scalar near = 0;
+    label nFar = 0;
+    forAll(p, i)
+    {
+        const point& x = p0[i];
+        if (x.x() < 1e-9 || x.x() > 1 - 1e-9) continue;
+        if (x.y() > 2*R + 1e-9 && x.y() < 0.5 - 1e-9)
+        {
+            far = max(far, mag(p[i] - x));
+            ++nFar;
+        }
+        else if (x.y() > 1e-9 && x.y() < R)
+        {
+            near = max(near, mag(p[i] - x));
+        }
+    }
+    EXPECT_GT(nFar, 0);
+    EXPECT_LE(far, 1e-4*0.05) << "the zone's far field moved";
+    EXPECT_GT(near, 1e-3);
 }
 
 

@@ -138,8 +138,9 @@ void Foam::dcpRBFBoundaryPoints::checkDistinct
         << projection_.pointFromCore(points_.row(i).data())
         << " without being the same point: one is on " << a.c_str()
         << ", the other on " << b.c_str() << " (two patches at the same place, the"
-        << " two sides of an interface or of a baffle, say). List one of"
-        << " them, or merge them into one patch" << exit(FatalError);
+        << " two sides of an interface or of a baffle, say). List only one"
+        << " of the patches, or make the points one (stitchMesh, or"
+        << " mergeOrSplitBaffles for a baffle)" << exit(FatalError);
 }
 
 
@@ -157,11 +158,15 @@ Foam::dcpRBFBoundaryPoints::dcpRBFBoundaryPoints
 :
     projection_(projection)
 {
-    markPoints
-    (
-        mesh, movingPatchIDs, staticPatchIDs,
-        region ? *region : dcpRBFRegion::wholeMesh(mesh)
-    );
+    // (not "region ? *region : wholeMesh(mesh)", which copies the region)
+    if (region)
+    {
+        markPoints(mesh, movingPatchIDs, staticPatchIDs, *region);
+    }
+    else
+    {
+        markPoints(mesh, movingPatchIDs, staticPatchIDs, dcpRBFRegion::wholeMesh(mesh));
+    }
     DynamicList<label> labels;
     DynamicList<bool> localMoving;
     forAll(kind_, pointi)

@@ -157,7 +157,8 @@ Foam::labelList Foam::dcpRBFRegion::regionFaces() const
             n[counted] += cell(celli);
         }
     }
-    forAll(n, patchi)
+    // (the processor patches, whose number differs between processors, last)
+    for (label patchi = 0; patchi < patches.nNonProcessor(); ++patchi)
     {
         reduce(n[patchi], sumOp<label>());
     }

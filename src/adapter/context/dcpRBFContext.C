@@ -25,8 +25,8 @@ Foam::dcpRBFContext::dcpRBFContext
     pointDisplacement_(pointDisplacement),
     points0_(points0),
     debug_(debug),
-    settings_(coeffs, mesh, points0),
     region_(mesh, coeffs, solverDict),
+    settings_(coeffs, mesh, points0, region_.nBorder() > 0),
     projection_(mesh),
     boundaryPoints_
     (

@@ -142,7 +142,7 @@ Foam::dcpRBFControlPoints::dcpRBFControlPoints(const dcpRBFContext& context)
     updated_(false),
     warnedMaxPoints_(false),
     blend_(nullptr),
-    selectedWith_(selectedWith(context.mesh(), settings_, boundary_.size())),
+    selectedWith_(selectedWith(context, boundary_.size())),
     state_
     (
         "dcpRBFState", context.mesh(),

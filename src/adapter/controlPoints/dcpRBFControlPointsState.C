@@ -19,11 +19,12 @@ Description
 
 Foam::dictionary Foam::dcpRBFControlPoints::selectedWith
 (
-    const polyMesh& mesh,
-    const dcpRBFSettings& settings,
+    const dcpRBFContext& context,
     const label nCandidates
 )
 {
+    const polyMesh& mesh = context.mesh();
+    const dcpRBFSettings& settings = context.settings();
     const auto names = [&](const labelList& ids)
     {
         wordList sorted(ids.size());
@@ -51,6 +52,11 @@ Foam::dictionary Foam::dcpRBFControlPoints::selectedWith
     put("function", settings.kernel().name());
     put("supportRadius", Foam::name(settings.kernel().radius()));
     put("polynomial", Switch(settings.polynomial()).c_str());
+    // (not for the whole mesh: the states written before regions match)
+    if (!context.region().whole())
+    {
+        put("region", context.region().source());
+    }
     settings.selection().setDependsOn(d);
     return d;
 }

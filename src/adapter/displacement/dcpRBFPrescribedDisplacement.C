@@ -80,13 +80,60 @@ Foam::string Foam::dcpRBFPrescribedDisplacement::selfMovedNames() const
 }
 
 
+void Foam::dcpRBFPrescribedDisplacement::checkMovingPatch
+(
+    const dictionary& dict,
+    const polyPatch& pp
+) const
+{
+    bool crosses = false;
+    for (const label pointi : pp.meshPoints())
+    {
+        crosses = crosses || !region_.point(pointi) || region_.border(pointi);
+    }
+    if (returnReduce(crosses, orOp<bool>()))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword movingPatches: patch " << pp.name() << " crosses"
+            << " the border of the region dcpRBF moves ("
+            << region_.source().c_str() << "): its points there are"
+            << " shared with cells outside the region, which dcpRBF"
+            << " neither moves nor checks, or lie on the region's side"
+            << " of a sliding interface, which stays on it. Make the"
+            << " cellZone hold every cell of the moving patch's faces"
+            << " and their neighbours, and keep the patch off the"
+            << " interface"
+            << exit(FatalIOError);
+    }
+    const pointPatchVectorField& condition =
+        pointDisplacement_.boundaryField()[pp.index()];
+    if (!condition.fixesValue())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword movingPatches: patch " << pp.name() << " has"
+            << " the pointDisplacement condition " << condition.type()
+            << ", which does not prescribe the displacement: nothing"
+            << " would move. Use a fixed-value condition"
+            << " (fixedValue, angularOscillatingDisplacement,"
+            << " solidBodyMotionDisplacement,"
+            << " sixDoFRigidBodyDisplacement, surfaceDisplacement,"
+            << " codedFixedValue, ...); a patch whose points should"
+            << " slide (slip, fixedNormalSlip) goes in neither list,"
+            << " one that stays put under staticPatches"
+            << exit(FatalIOError);
+    }
+}
+
+
 void Foam::dcpRBFPrescribedDisplacement::checkPatches(const dictionary& dict)
 {
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
     const pointVectorField::Boundary& conditions =
         pointDisplacement_.boundaryField();
     wordList unlisted;
-    forAll(patches, patchi)
+    // (touches() is collective: not over the processor patches, whose
+    // number differs between processors)
+    for (label patchi = 0; patchi < patches.nNonProcessor(); ++patchi)
     {
         const polyPatch& pp = patches[patchi];
         if (!region_.touches(patchi))
@@ -105,37 +152,7 @@ void Foam::dcpRBFPrescribedDisplacement::checkPatches(const dictionary& dict)
         }
         if (settings_.movingPatchIDs().found(patchi))
         {
-            bool crosses = false;
-            for (const label pointi : pp.meshPoints())
-            {
-                crosses = crosses || !region_.point(pointi) || region_.shared(pointi);
-            }
-            if (returnReduce(crosses, orOp<bool>()))
-            {
-                FatalIOErrorInFunction(dict)
-                    << "Keyword movingPatches: patch " << pp.name() << " crosses"
-                    << " the border of the region dcpRBF moves ("
-                    << region_.source().c_str() << "): its points there are"
-                    << " shared with cells outside the region, which dcpRBF"
-                    << " neither moves nor checks. Make the cellZone hold every"
-                    << " cell of the moving patch's faces and their neighbours"
-                    << exit(FatalIOError);
-            }
-            if (!conditions[patchi].fixesValue())
-            {
-                FatalIOErrorInFunction(dict)
-                    << "Keyword movingPatches: patch " << pp.name() << " has"
-                    << " the pointDisplacement condition " << conditions[patchi].type()
-                    << ", which does not prescribe the displacement: nothing"
-                    << " would move. Use a fixed-value condition"
-                    << " (fixedValue, angularOscillatingDisplacement,"
-                    << " solidBodyMotionDisplacement,"
-                    << " sixDoFRigidBodyDisplacement, surfaceDisplacement,"
-                    << " codedFixedValue, ...); a patch whose points should"
-                    << " slide (slip, fixedNormalSlip) goes in neither list,"
-                    << " one that stays put under staticPatches"
-                    << exit(FatalIOError);
-            }
+            checkMovingPatch(dict, pp);
         }
         else if
         (

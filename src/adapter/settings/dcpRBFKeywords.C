@@ -127,11 +127,12 @@ const std::vector<K>& table()
     K::choice
     (
         coeffs, "farField", "still", "still interpolated",
-        "with static patches: the displacement blended to zero between"
+        "with static points (staticPatches, a region's border): the"
+        " displacement blended to zero between"
         " supportRadius and twice it from the moving points, or the"
         " interpolant's own"
     ).defaultIs("`still` (compactly supported functions), `interpolated` (global ones)")
-     .alsoNeeds("`still` not with `rotationInterpolation true`"),
+     .alsoNeeds("`still` not with `rotationInterpolation true`, nor without static points"),
     K::other
     (
         coeffs, "frame", type::subDict, "none (the region's frame is still)",

@@ -247,7 +247,11 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
 }
 
 
-void Foam::dcpRBFSettings::readFarField(const dcpRBFDictReader& r)
+void Foam::dcpRBFSettings::readFarField
+(
+    const dcpRBFDictReader& r,
+    const bool staticBorder
+)
 {
     const dcpRBFKeyword& k = key("farField");
     const bool given = r.dict().found(k.name);
@@ -261,7 +265,17 @@ void Foam::dcpRBFSettings::readFarField(const dcpRBFDictReader& r)
             << " (blendProfile, rotation { ... }). Allowed: farField"
             << " interpolated, or no farField" << exit(FatalIOError);
     }
-    stillFarField_ = still && !rotation && staticPatchIDs_.size();
+    const bool staticPoints = staticPatchIDs_.size() || staticBorder;
+    if (given && still && !staticPoints)
+    {
+        FatalIOErrorInFunction(r.dict())
+            << "Keyword farField still has no effect without static points"
+            << " (no staticPatches, no region border): the whole boundary"
+            << " moves, and an affine motion of it is reproduced at every"
+            << " point. Allowed: farField interpolated, or no farField, or"
+            << " staticPatches (...)" << exit(FatalIOError);
+    }
+    stillFarField_ = still && !rotation && staticPoints;
 }
 
 
@@ -358,7 +372,8 @@ Foam::dcpRBFSettings::dcpRBFSettings
 (
     const dictionary& dict,
     const polyMesh& mesh,
-    const pointField& points0
+    const pointField& points0,
+    const bool staticBorder
 )
 :
     movingPatchIDs_
@@ -397,7 +412,7 @@ Foam::dcpRBFSettings::dcpRBFSettings
     floorAction_ = r.getEnum(key("qualityFloorAction"), floorActionNames);
     guardIterations_ = r.getLabel(key("guardIterations"));
     boundaryCorrection_ = r.getSwitch(key("boundaryCorrection"));
-    readFarField(r);
+    readFarField(r, staticBorder);
     evaluationMemoryAuto_ = !dict.found("evaluationMemoryMB");
     evaluationMemoryMB_ = r.getLabel(key("evaluationMemoryMB"));
     pointsPerThread_ = r.getLabel(key("pointsPerThread"));
