@@ -15,7 +15,8 @@ Description
     solid-body motion) the region's new points are the frame's transform of
     the points without it, the others stay. A moving patch outside the
     region, a zone that does not exist and two regions are refused, naming
-    the keyword.
+    the keyword, and so is a 2D mesh's frame that would move points out of
+    the plane.
 
 \*---------------------------------------------------------------------------*/
 
@@ -320,6 +321,28 @@ TEST(Region, RefusalsNameTheKeyword)
         testCase c(2, 8, coeffs + " frame rotatingMotion;");
         const std::string m(message(c));
         EXPECT_NE(m.find("Keyword frame"), std::string::npos) << m;
+    }
+    {
+        // a 2D mesh's frame turning about an axis in its plane (at the
+        // first step: the refusal needs the motion)
+        testCase c
+        (
+            2, 8,
+            coeffs + " frame { solidBodyMotionFunction rotatingMotion;"
+            " rotatingMotionCoeffs { origin (0 0 0); axis (1 0 0); omega 1; } }"
+        );
+        std::string m("no error");
+        try
+        {
+            autoPtr<motionSolver> ms(select(c));
+            bumpStep(c, ms());
+        }
+        catch (const Foam::error& e)
+        {
+            m = e.message();
+        }
+        EXPECT_NE(m.find("Keyword frame: at time"), std::string::npos) << m;
+        EXPECT_NE(m.find("across its plane"), std::string::npos) << m;
     }
     {
         // a solid body tearing its region from the cells around

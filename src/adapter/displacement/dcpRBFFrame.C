@@ -59,6 +59,38 @@ Foam::dcpRBFFrame::dcpRBFFrame(const dcpRBFContext& context)
 }
 
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dcpRBFFrame::checkPlanar(const septernion& T, const pointField& p) const
+{
+    if (mesh_.nSolutionD() != 2)
+    {
+        return;
+    }
+    const Vector<label>& solved = mesh_.solutionD();
+    vector normal(Zero);
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (solved[d] < 0) normal[d] = 1;
+    }
+    scalar across = 0;
+    forAll(p, pointi)
+    {
+        across = max(across, mag((T.transformPoint(p[pointi]) - p[pointi]) & normal));
+    }
+    reduce(across, maxOp<scalar>());
+    if (across > 1e-9*mag(mesh_.bounds().span()))
+    {
+        FatalErrorInFunction
+            << "Keyword frame: at time " << mesh_.time().timeName()
+            << " its solid-body motion moves the 2D mesh's points by up to "
+            << across << " across its plane (normal " << normal << "). On a"
+            << " 2D mesh the frame may turn about the normal " << normal
+            << " and move within the plane only" << exit(FatalError);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::dcpRBFFrame::place(pointField& p) const
@@ -66,6 +98,7 @@ void Foam::dcpRBFFrame::place(pointField& p) const
     if (motion_.valid())
     {
         const septernion T(motion_->transformation());
+        checkPlanar(T, p);
         forAll(p, pointi)
         {
             p[pointi] = T.transformPoint(p[pointi]);

@@ -137,7 +137,8 @@ const std::vector<K>& table()
     (
         coeffs, "frame", type::subDict, "none (the region's frame is still)",
         "`solidBodyMotionFunction` and its coefficients, as OpenFOAM's"
-        " solidBody motion solver takes them",
+        " solidBody motion solver takes them; on a 2D mesh turning about the"
+        " plane's normal and moving within the plane",
         "the region moves as this solid body, dcpRBF morphs it on top"
     ),
     K::onOff
