@@ -79,7 +79,9 @@ test_tutorials_sixDoFAirfoil2D_short_bothSolversMeshOk() {
 # solver of dynamicMultiMotionSolverFvMesh, in a rotating frame, behind a
 # cyclicAMI), shortened to 0.5 s (20 steps: a quarter turn). Its check
 # (checkMotion.py) must say ok on every line: the stator does not move at
-# all, the rotor's side of the interface is the solid-body rotation (1e-12),
+# all (a check of the set-up: dynamicMultiMotionSolverFvMesh gives dcpRBF
+# the rotor zone's points alone), the rotor's side of the interface is the
+# solid-body rotation (1e-12),
 # the hub moves in the frame, the AMI's weights sum to 1 (1 %), checkMesh
 # passes at every written time, no cell inverts. The same run on 3
 # processors (the decomposition cutting the rotor and the interface; the

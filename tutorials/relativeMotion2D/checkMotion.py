@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 """What moved and what did not, at every written time: the stator (beyond the
-interface, and its side of it) must not move at all; the rotor's side of the
+interface, and its side of it) must not move at all (dynamicMultiMotionSolverFvMesh
+moves the rotor zone's points alone: a check of the set-up); the rotor's side of the
 interface must be the reference turned about the axis by omega t (the AMI
 stays intact); the AMI's weights and checkMesh over the whole run. One line
 each, ending "ok" or "FAILED"; the exit code is 1 if any failed.
