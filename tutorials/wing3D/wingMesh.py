@@ -126,6 +126,9 @@ def main():
     ap.add_argument("--growth", type=float, help="layer growth ratio")
     ap.add_argument("--thickness", type=float, default=0.10,
                     help="section thickness / chord")
+    ap.add_argument("--box-scale", type=float, default=1.0,
+                    help="the far-field box scaled by this about the root's leading edge"
+                         " (default 1: x in [-5, 7], y in [0, 4], z in [-4, 4] m)")
     a = ap.parse_args()
 
     level = "fine" if a.fine else "coarse" if a.coarse else "default"
@@ -213,8 +216,8 @@ def main():
     layers = [t for d, t in ext if d == 3]
     gmsh.model.geo.synchronize()
 
-    # Box: x in [-5, 7] m, y in [0, 4] m, z in [-4, 4] m
-    x0, x1, y1, z = -5.0, 7.0, 4.0, 4.0
+    # Box: x in [-5, 7] m, y in [0, 4] m, z in [-4, 4] m, times --box-scale
+    x0, x1, y1, z = (a.box_scale*v for v in (-5.0, 7.0, 4.0, 4.0))
     hole = geo.addCurveLoop([c[1] for c in gmsh.model.getBoundary(top)])
     p = [geo.addPoint(x, y, zz, hf) for y in (0.0, y1)
          for (x, zz) in ((x0, -z), (x1, -z), (x1, z), (x0, z))]
@@ -244,8 +247,8 @@ def main():
 
     nodeTags = gmsh.model.mesh.getNodes()[0]
     print("wingMesh: %s mesh, %d points, wing %g/%g m, far %g m, %d layers, "
-          "first height %g m, total %g m"
-          % (level, len(nodeTags), hw, he, hf, nl, heights[0], heights[-1]))
+          "first height %g m, total %g m, box x %g"
+          % (level, len(nodeTags), hw, he, hf, nl, heights[0], heights[-1], a.box_scale))
     gmsh.finalize()
 
 
