@@ -14,8 +14,16 @@ License
 Foam::dcpRBFFrame::dcpRBFFrame(const dcpRBFContext& context)
 :
     mesh_(context.mesh()),
-    region_(context.region())
+    region_(context.region()),
+    normal_(Zero)
 {
+    if (mesh_.nSolutionD() == 2)
+    {
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (mesh_.solutionD()[d] < 0) normal_[d] = 1;
+        }
+    }
     const dictionary& coeffs = context.coeffs();
     if (coeffs.found("frame"))
     {
@@ -61,31 +69,20 @@ Foam::dcpRBFFrame::dcpRBFFrame(const dcpRBFContext& context)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::dcpRBFFrame::checkPlanar(const septernion& T, const pointField& p) const
+void Foam::dcpRBFFrame::checkPlanar(const scalar across) const
 {
     if (mesh_.nSolutionD() != 2)
     {
         return;
     }
-    const Vector<label>& solved = mesh_.solutionD();
-    vector normal(Zero);
-    for (direction d = 0; d < vector::nComponents; ++d)
-    {
-        if (solved[d] < 0) normal[d] = 1;
-    }
-    scalar across = 0;
-    forAll(p, pointi)
-    {
-        across = max(across, mag((T.transformPoint(p[pointi]) - p[pointi]) & normal));
-    }
-    reduce(across, maxOp<scalar>());
-    if (across > 1e-9*mag(mesh_.bounds().span()))
+    const scalar largest = returnReduce(across, maxOp<scalar>());
+    if (largest > 1e-9*mag(mesh_.bounds().span()))
     {
         FatalErrorInFunction
             << "Keyword frame: at time " << mesh_.time().timeName()
             << " its solid-body motion moves the 2D mesh's points by up to "
-            << across << " across its plane (normal " << normal << "). On a"
-            << " 2D mesh the frame may turn about the normal " << normal
+            << largest << " across its plane (normal " << normal_ << "). On a"
+            << " 2D mesh the frame may turn about the normal " << normal_
             << " and move within the plane only" << exit(FatalError);
     }
 }
@@ -97,12 +94,17 @@ void Foam::dcpRBFFrame::place(pointField& p) const
 {
     if (motion_.valid())
     {
+        // transformed once; in 2D the largest move across the plane too
+        // (normal_ is zero in 3D)
         const septernion T(motion_->transformation());
-        checkPlanar(T, p);
+        scalar across = 0;
         forAll(p, pointi)
         {
-            p[pointi] = T.transformPoint(p[pointi]);
+            const point q(T.transformPoint(p[pointi]));
+            across = max(across, mag((q - p[pointi]) & normal_));
+            p[pointi] = q;
         }
+        checkPlanar(across);
     }
     const pointField& now = mesh_.points();
     for (const label pointi : outside_)
