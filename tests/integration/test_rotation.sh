@@ -40,6 +40,35 @@ test_rotation2D_airfoil_pitch150deg_validWhereDisplacementFolds() {
     meshOkAtEveryTime
 }
 
+# studies/largeRotation/foldScan predicts where a blend folds without a run.
+# On the 150 deg case, whose every written mesh is valid, it finds no fold up
+# to 150 deg in the run's direction; with the blend cut to a step (1 where it
+# is 1, 0 elsewhere: the whole twist in one layer of cells) it finds one
+# within 20 deg
+test_rotation2D_foldScan_agreesWithTheRun() {
+    local py
+    write_motionControls .
+    airfoilMesh 0.04 1.0 || return 1
+    airfoilPointDisplacement 2.618
+    dynamicMeshDict "$rotationCoeffs2D"
+    run moveDynamicMesh || return 1
+    meshOkAtEveryTime || return 1
+    py=$(pythonWithGmsh) || fail "no python with gmsh (and numpy)" || return 1
+    # nose up: -150 deg about +z, i.e. +150 about -z (foldScan's first axis)
+    "$py" "$top/studies/largeRotation/foldScan" . --centre 0.25 0 0 --axis 0 0 -1 \
+        --max 150 > log.foldScan 2>&1 || fail "foldScan failed: $(tail -3 log.foldScan)" || return 1
+    grep -m1 "^  axis" log.foldScan | grep -q "no fold up to 150 deg" \
+        || fail "foldScan finds a fold the run does not have: $(grep -m1 '^  axis' log.foldScan)" || return 1
+    mkdir -p step/0
+    cp -r constant system step/
+    awk '/^[-0-9.eE+]+$/ && list { print ($1 >= 1 ? 1 : 0); next }
+         /^\($/ { list = 1 } /^\)/ { list = 0 } { print }' 0/rotationBlend > step/0/rotationBlend
+    "$py" "$top/studies/largeRotation/foldScan" step --centre 0.25 0 0 --axis 0 0 -1 \
+        --max 20 > log.foldScan.step 2>&1 || fail "foldScan failed on the step blend" || return 1
+    grep -m1 "^  axis" log.foldScan.step | grep -q "first fold at [0-9]* deg" \
+        || fail "foldScan finds no fold of the step blend within 20 deg: $(grep -m1 '^  axis' log.foldScan.step)"
+}
+
 # airfoilSlab3D AMPLITUDE: the airfoil mesh with symmetry sides instead of
 # empty ones, so that the motion is solved in 3D (3D fit, star-shaped ring on
 # the sphere), pitched by AMPLITUDE [rad] at t = 1
