@@ -109,6 +109,11 @@ std::vector<badInput> catalogue()
         {"BlendSlopeWithLogProfile", mv + st + r + "rotationInterpolation true; rotation { blendProfile log; blendSlope 0.1; }", "blendSlope"},
         {"NegativeBlendSlope", mv + st + r + "rotationInterpolation true; rotation { blendSlope -1; }", "blendSlope"},
         {"BlendRampAboveOne", mv + st + r + "rotationInterpolation true; rotation { blendRamp 2; }", "blendRamp"},
+        {"RotationAxisIn2D", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0 0); axis (0 0 1); }", "Keyword axis is for 3D meshes"},
+        {"RotationAxisZero", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0 0); axis (0 0 0); }", "Keyword axis must be a non-zero vector"},
+        {"RotationAxisWord", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0 0); axis up; }", "Keyword axis must be a non-zero vector"},
+        {"RotationAxisWithoutCentre", mv + st + r + "rotationInterpolation true; rotation { axis (0 0 1); }", "Keyword axis needs centre"},
+        {"RotationAxisBesideBodies", mv + st + r + "rotationInterpolation true; rotation { axis (0 0 1); bodies { b { patches (bottom); } } }", "Keyword axis: with bodies"},
         {"MovingPatchRegexMatchesNothing", "movingPatches (\"wing.*\");" + st + r, "movingPatches"},
 
         // A new user's mistakes (issue 39), refused at the start, naming

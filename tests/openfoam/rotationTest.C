@@ -9,7 +9,8 @@ Description
     rotationInterpolation: a rigid motion of every patch together (no static
     patch) moves every point rigidly, in every selection mode, past half a
     turn; a rotating body turns the points within its circle rigidly and
-    leaves the points beyond the blend in place, in one step of 150 degrees.
+    leaves the points beyond the blend in place, in one step of 150 degrees;
+    a pivot axis moves the centre level with the body's centroid.
 
 \*---------------------------------------------------------------------------*/
 
@@ -145,6 +146,37 @@ TEST(RotatingBody, RadialRingInnerCircleTurnsRigidlyOuterPointsStay)
     }
     EXPECT_GT(nInside, 50);
     EXPECT_GT(nOutside, 100);
+}
+
+
+TEST(RotatingBody, AxisCentresTheBlendLevelWithTheCentroid)
+{
+    // 3D: bottom (y = 0, x and z in [0, 1]) pitched 30 deg about the z axis
+    // through (0.5 0 0). With axis, the centre (0.5 0 0) moves along it to
+    // the point level with the bottom's centroid, (0.5 0 0.5): the mesh is
+    // the one that centre gives, and not the one (0.5 0 0) gives
+    const rigidMap f(makeMap(vector(0, 0, 1), 30, point(0.5, 0, 0), Zero));
+    auto newPoints = [&f](const std::string& rotation)
+    {
+        testCase c
+        (
+            3, 6,
+            "movingPatches (bottom); staticPatches (top);"
+            " function WendlandC2; supportRadius 2; polynomial true;"
+            " controlPoints { selection greedy; } rotationInterpolation true;"
+            " rotation { " + rotation + " }"
+        );
+        autoPtr<motionSolver> ms(select(c));
+        auto& solver = refCast<dcpRBFMotionSolver>(ms());
+        c.runTime()++;
+        prescribe(solver.pointDisplacement(), "bottom", f);
+        return pointField(ms->newPoints());
+    };
+    const pointField onAxis(newPoints("centre (0.5 0 0); axis (0 0 2);"));
+    const pointField level(newPoints("centre (0.5 0 0.5);"));
+    const pointField root(newPoints("centre (0.5 0 0);"));
+    EXPECT_LT(max(mag(onAxis - level)), 1e-12);
+    EXPECT_GT(max(mag(root - level)), 1e-3) << "the centre does not change the mesh";
 }
 
 } // namespace

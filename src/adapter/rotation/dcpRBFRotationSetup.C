@@ -42,12 +42,16 @@ Foam::List<const Foam::dictionary*> Foam::dcpRBFRotation::bodyDictionaries
             << " { patches (wing); centre (0.25 0 0); } }"
             << exit(FatalIOError);
     }
-    if (dict.found("centre"))
+    for (const word k : {"centre", "axis"})
     {
-        FatalIOErrorInFunction(dict)
-            << "Keyword centre: with bodies, each body has its own centre"
-            << " (bodies { wing { patches (wing); centre (0.25 0 0); } });"
-            << " remove centre from rotation" << exit(FatalIOError);
+        if (dict.found(k))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword " << k << ": with bodies, each body has its own "
+                << k << " (bodies { wing { patches (wing); centre (0.25 0 0);"
+                << " } }); remove " << k << " from rotation"
+                << exit(FatalIOError);
+        }
     }
     const dictionary& bodies = dict.subDict("bodies");
     List<const dictionary*> bodyDicts;
@@ -200,6 +204,17 @@ void Foam::dcpRBFRotation::assignCandidates
 }
 
 
+Eigen::Vector3d Foam::dcpRBFRotation::centroid(const label b) const
+{
+    Eigen::Vector3d c(Eigen::Vector3d::Zero());
+    for (const Eigen::Index i : bodyPoints_[b])
+    {
+        c += boundary_.points().row(i).transpose();
+    }
+    return c/double(bodyPoints_[b].size());
+}
+
+
 void Foam::dcpRBFRotation::readCentre(const label b, const dictionary& body)
 {
     // given (mesh coordinates), or the centroid of the body's points
@@ -211,18 +226,22 @@ void Foam::dcpRBFRotation::readCentre(const label b, const dictionary& body)
     }
     if (!body.found("centre"))
     {
-        centres_[b].setZero();
-        for (const Eigen::Index i : bodyPoints_[b])
+        if (body.found("axis"))
         {
-            centres_[b] += boundary_.points().row(i).transpose();
+            FatalIOErrorInFunction(body)
+                << "Keyword axis needs centre, a point of the axis (e.g. the"
+                << " pivot: centre (0.25 0 0); axis (0 1 0);)"
+                << exit(FatalIOError);
         }
-        centres_[b] /= double(bodyPoints_[b].size());
+        centres_[b] = centroid(b);
         return;
     }
-    projection_.toCore
-    (
-        dcpRBFDictReader(body).getPoint("centre"), centres_[b].data()
-    );
+    const dcpRBFDictReader r(body);
+    projection_.toCore(r.getPoint("centre"), centres_[b].data());
+    if (body.found("axis"))
+    {
+        levelWithCentroid(b, r.getDirection("axis"), body);
+    }
     Eigen::Vector3d lo(Eigen::Vector3d::Constant(GREAT)), hi(-lo);
     for (const Eigen::Index i : bodyPoints_[b])
     {
@@ -238,13 +257,38 @@ void Foam::dcpRBFRotation::readCentre(const label b, const dictionary& body)
     {
         WarningInFunction
             << "Body " << bodyNames_[b] << ": centre "
-            << body.get<point>("centre") << " is outside the"
-            << " body's bounding box (" << projection_.pointFromCore(lo.data())
+            << projection_.pointFromCore(centres_[b].data()) << " is outside"
+            << " the body's bounding box (" << projection_.pointFromCore(lo.data())
             << ' ' << projection_.pointFromCore(hi.data()) << "): the"
             << " blend turns everything within the body's farthest"
             << " point from the centre rigidly, a centre off the body"
             << " leaves less room for the twist. Is it the pivot?" << endl;
     }
+}
+
+
+void Foam::dcpRBFRotation::levelWithCentroid
+(
+    const label b,
+    const vector& axis,
+    const dictionary& body
+)
+{
+    // the same rotations about the axis, the blend's centre where the body's
+    // farthest point is nearest (mid-span for a wing pitching about its span)
+    if (projection_.dim() != 3)
+    {
+        FatalIOErrorInFunction(body)
+            << "Keyword axis is for 3D meshes: in 2D a body turns about the"
+            << " plane's normal through centre. Remove axis" << exit(FatalIOError);
+    }
+    Eigen::Vector3d e;
+    projection_.toCore(axis, e.data());
+    const point given(projection_.pointFromCore(centres_[b].data()));
+    centres_[b] += e*e.dot(centroid(b) - centres_[b]);
+    Info<< "    " << bodyNames_[b] << ": centre " << given << " moved along axis "
+        << axis << " to " << projection_.pointFromCore(centres_[b].data())
+        << ", level with the centroid of the body's points" << endl;
 }
 
 

@@ -306,9 +306,12 @@ Foam::wordRes Foam::dcpRBFDictReader::getWordRes
 }
 
 
-Foam::point Foam::dcpRBFDictReader::getPoint(const word& keyword) const
+Foam::vector Foam::dcpRBFDictReader::getTriple
+(
+    const word& keyword,
+    const string& expected
+) const
 {
-    const string expected("a point (x y z), e.g. " + keyword + " (0.25 0 0)");
     ITstream* is = tokens(keyword, expected);
     bool ok =
         is && is->size() == 5 && (*is)[0] == token::BEGIN_LIST
@@ -324,7 +327,30 @@ Foam::point Foam::dcpRBFDictReader::getPoint(const word& keyword) const
             << "; got " << (is ? asWritten(*is) : string("nothing")).c_str()
             << exit(FatalIOError);
     }
-    return point((*is)[1].number(), (*is)[2].number(), (*is)[3].number());
+    return vector((*is)[1].number(), (*is)[2].number(), (*is)[3].number());
+}
+
+
+Foam::point Foam::dcpRBFDictReader::getPoint(const word& keyword) const
+{
+    return getTriple(keyword, "a point (x y z), e.g. " + keyword + " (0.25 0 0)");
+}
+
+
+Foam::vector Foam::dcpRBFDictReader::getDirection(const word& keyword) const
+{
+    const string expected
+    (
+        "a non-zero vector (x y z), e.g. " + keyword + " (0 1 0)"
+    );
+    const vector v(getTriple(keyword, expected));
+    if (!(mag(v) > VSMALL))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << keyword << " must be " << expected.c_str()
+            << "; got (0 0 0)" << exit(FatalIOError);
+    }
+    return v/mag(v);
 }
 
 

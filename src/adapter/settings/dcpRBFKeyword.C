@@ -199,6 +199,7 @@ Foam::string Foam::dcpRBFKeyword::typeText() const
         case valueType::real: return "scalar";
         case valueType::integer: return "integer";
         case valueType::position: return "point `(x y z)`";
+        case valueType::direction: return "vector `(x y z)`";
         case valueType::name: return "word";
         case valueType::subDict: return "sub-dictionary";
     }

@@ -240,6 +240,14 @@ const std::vector<K>& table()
     ),
     K::other
     (
+        rot, "axis", type::direction, "none",
+        "a non-zero vector; 3D only; needs `centre`; not together with"
+        " `bodies` (each body then has its own)",
+        "the single body's pivot axis through `centre`: the blend is centred"
+        " at the point of the axis level with the body's centroid"
+    ),
+    K::other
+    (
         rot, "bodies", type::subDict, "all `movingPatches`, one body",
         "one sub-dictionary per body, at least one"
         " ([below](#bodies-entries)); every moving patch in exactly one body;"
@@ -274,6 +282,12 @@ const std::vector<K>& table()
     (
         body, "centre", type::position, "the centroid of the body's points",
         "any point", "the body's centre of rotation"
+    ),
+    K::other
+    (
+        body, "axis", type::direction, "none",
+        "a non-zero vector; 3D only; needs `centre`",
+        "the body's pivot axis through `centre`"
     ),
 
     // dcpRBFFvMeshCoeffs
