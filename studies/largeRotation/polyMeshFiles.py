@@ -40,5 +40,6 @@ def read_point_scalars(path):
 def patch_faces(case, name):
     """The first face and the number of faces of patch name (constant/polyMesh/boundary)."""
     text = open(os.path.join(case, "constant", "polyMesh", "boundary")).read()
-    m = re.search(name + r"\s*\{[^}]*nFaces\s+(\d+);[^}]*startFace\s+(\d+);", text)
+    m = re.search(r"(?m)^\s*" + re.escape(name)
+                  + r"\s*\{[^}]*nFaces\s+(\d+);[^}]*startFace\s+(\d+);", text)
     return int(m.group(2)), int(m.group(1))

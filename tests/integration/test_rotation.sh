@@ -53,7 +53,8 @@ test_rotation2D_foldScan_agreesWithTheRun() {
     dynamicMeshDict "$rotationCoeffs2D"
     run moveDynamicMesh || return 1
     meshOkAtEveryTime || return 1
-    py=$(pythonWithGmsh) || fail "no python with gmsh (and numpy)" || return 1
+    py=$(pythonWithGmsh) || fail "no python with gmsh" || return 1
+    "$py" -c "import numpy" 2> /dev/null || fail "no numpy for $py (foldScan needs it)" || return 1
     # nose up: -150 deg about +z, i.e. +150 about -z (foldScan's first axis)
     "$py" "$top/studies/largeRotation/foldScan" . --centre 0.25 0 0 --axis 0 0 -1 \
         --max 150 > log.foldScan 2>&1 || fail "foldScan failed: $(tail -3 log.foldScan)" || return 1
@@ -64,7 +65,8 @@ test_rotation2D_foldScan_agreesWithTheRun() {
     awk '/^[-0-9.eE+]+$/ && list { print ($1 >= 1 ? 1 : 0); next }
          /^\($/ { list = 1 } /^\)/ { list = 0 } { print }' 0/rotationBlend > step/0/rotationBlend
     "$py" "$top/studies/largeRotation/foldScan" step --centre 0.25 0 0 --axis 0 0 -1 \
-        --max 20 > log.foldScan.step 2>&1 || fail "foldScan failed on the step blend" || return 1
+        --max 20 > log.foldScan.step 2>&1 \
+        || fail "foldScan failed on the step blend: $(tail -3 log.foldScan.step)" || return 1
     grep -m1 "^  axis" log.foldScan.step | grep -q "first fold at [0-9]* deg" \
         || fail "foldScan finds no fold of the step blend within 20 deg: $(grep -m1 '^  axis' log.foldScan.step)"
 }

@@ -24,6 +24,7 @@ struct badInput
     std::string name;       // test name
     std::string coeffs;     // dcpRBFCoeffs body
     std::string expected;   // words the error message must contain
+    label dim = 2;          // the box's dimension
 };
 
 const std::string ok =
@@ -110,9 +111,10 @@ std::vector<badInput> catalogue()
         {"NegativeBlendSlope", mv + st + r + "rotationInterpolation true; rotation { blendSlope -1; }", "blendSlope"},
         {"BlendRampAboveOne", mv + st + r + "rotationInterpolation true; rotation { blendRamp 2; }", "blendRamp"},
         {"RotationAxisIn2D", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0 0); axis (0 0 1); }", "Keyword axis is for 3D meshes"},
-        {"RotationAxisZero", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0 0); axis (0 0 0); }", "Keyword axis must be a non-zero vector"},
-        {"RotationAxisWord", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0 0); axis up; }", "Keyword axis must be a non-zero vector"},
-        {"RotationAxisWithoutCentre", mv + st + r + "rotationInterpolation true; rotation { axis (0 0 1); }", "Keyword axis needs centre"},
+        {"RotationAxisZero3D", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0 0.5); axis (0 0 0); }", "Keyword axis must be a non-zero vector", 3},
+        {"RotationAxisWord3D", mv + st + r + "rotationInterpolation true; rotation { centre (0.5 0 0.5); axis up; }", "Keyword axis must be a non-zero vector", 3},
+        {"RotationAxisWithoutCentre3D", mv + st + r + "rotationInterpolation true; rotation { axis (0 0 1); }", "Keyword axis needs centre", 3},
+        {"RotationBodyAxisWithoutCentre3D", mv + st + r + "rotationInterpolation true; rotation { bodies { b { patches (bottom); axis (0 0 1); } } }", "Keyword axis needs centre", 3},
         {"RotationAxisBesideBodies", mv + st + r + "rotationInterpolation true; rotation { axis (0 0 1); bodies { b { patches (bottom); } } }", "Keyword axis: with bodies"},
         {"MovingPatchRegexMatchesNothing", "movingPatches (\"wing.*\");" + st + r, "movingPatches"},
 
@@ -194,7 +196,7 @@ class BadInput : public ::testing::TestWithParam<badInput> {};
 TEST_P(BadInput, FatalIOErrorNamesTheKeyword)
 {
     const badInput& b = GetParam();
-    testCase c(2, 3, b.coeffs);
+    testCase c(b.dim, 3, b.coeffs);
     try
     {
         autoPtr<motionSolver> ms(select(c));

@@ -154,7 +154,8 @@ TEST(RotatingBody, AxisCentresTheBlendLevelWithTheCentroid)
     // 3D: bottom (y = 0, x and z in [0, 1]) pitched 30 deg about the z axis
     // through (0.5 0 0). With axis, the centre (0.5 0 0) moves along it to
     // the point level with the bottom's centroid, (0.5 0 0.5): the mesh is
-    // the one that centre gives, and not the one (0.5 0 0) gives
+    // the one that centre gives, and not the one (0.5 0 0) gives; the same
+    // in a bodies entry
     const rigidMap f(makeMap(vector(0, 0, 1), 30, point(0.5, 0, 0), Zero));
     auto newPoints = [&f](const std::string& rotation)
     {
@@ -175,7 +176,12 @@ TEST(RotatingBody, AxisCentresTheBlendLevelWithTheCentroid)
     const pointField onAxis(newPoints("centre (0.5 0 0); axis (0 0 2);"));
     const pointField level(newPoints("centre (0.5 0 0.5);"));
     const pointField root(newPoints("centre (0.5 0 0);"));
+    const pointField body
+    (
+        newPoints("bodies { b { patches (bottom); centre (0.5 0 0); axis (0 0 1); } }")
+    );
     EXPECT_LT(max(mag(onAxis - level)), 1e-12);
+    EXPECT_LT(max(mag(body - level)), 1e-12) << "axis in a bodies entry";
     EXPECT_GT(max(mag(root - level)), 1e-3) << "the centre does not change the mesh";
 }
 

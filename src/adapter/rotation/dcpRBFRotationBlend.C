@@ -96,10 +96,13 @@ void Foam::dcpRBFRotation::computeWeights
         }
         FatalIOErrorInFunction(dict)
             << "rotationInterpolation: " << e.what() << nl << "    Bodies "
-            << bodyNames_ << ", centres (keyword centre) " << centres.str()
+            << bodyNames_ << ", centres (keyword centre; moved along axis"
+            << " where given) " << centres.str()
             << nl << "    A static point (or another body's) is closer to the"
             << " centre than the body in some direction: give the body's pivot"
-            << " as its centre (keyword centre), inside or next to the body"
+            << " as its centre (keyword centre), inside or next to the body;"
+            << " with axis, the centre moves along it level with the body's"
+            << " centroid: check that the axis is the pivot's"
             << exit(FatalIOError);
     }
 }

@@ -49,8 +49,8 @@ Foam::List<const Foam::dictionary*> Foam::dcpRBFRotation::bodyDictionaries
             FatalIOErrorInFunction(dict)
                 << "Keyword " << k << ": with bodies, each body has its own "
                 << k << " (bodies { wing { patches (wing); centre (0.25 0 0);"
-                << " } }); remove " << k << " from rotation"
-                << exit(FatalIOError);
+                << (k == "axis" ? " axis (0 1 0);" : "") << " } }); remove "
+                << k << " from rotation" << exit(FatalIOError);
         }
     }
     const dictionary& bodies = dict.subDict("bodies");
@@ -224,6 +224,12 @@ void Foam::dcpRBFRotation::readCentre(const label b, const dictionary& body)
             << "Body " << bodyNames_[b] << " has no boundary points"
             << exit(FatalIOError);
     }
+    if (body.found("axis") && projection_.dim() != 3)
+    {
+        FatalIOErrorInFunction(body)
+            << "Keyword axis is for 3D meshes: in 2D a body turns about the"
+            << " plane's normal through centre. Remove axis" << exit(FatalIOError);
+    }
     if (!body.found("centre"))
     {
         if (body.found("axis"))
@@ -240,7 +246,7 @@ void Foam::dcpRBFRotation::readCentre(const label b, const dictionary& body)
     projection_.toCore(r.getPoint("centre"), centres_[b].data());
     if (body.found("axis"))
     {
-        levelWithCentroid(b, r.getDirection("axis"), body);
+        levelWithCentroid(b, r.getDirection("axis"));
     }
     Eigen::Vector3d lo(Eigen::Vector3d::Constant(GREAT)), hi(-lo);
     for (const Eigen::Index i : bodyPoints_[b])
@@ -267,27 +273,18 @@ void Foam::dcpRBFRotation::readCentre(const label b, const dictionary& body)
 }
 
 
-void Foam::dcpRBFRotation::levelWithCentroid
-(
-    const label b,
-    const vector& axis,
-    const dictionary& body
-)
+void Foam::dcpRBFRotation::levelWithCentroid(const label b, const vector& axis)
 {
-    // the same rotations about the axis, the blend's centre where the body's
-    // farthest point is nearest (mid-span for a wing pitching about its span)
-    if (projection_.dim() != 3)
-    {
-        FatalIOErrorInFunction(body)
-            << "Keyword axis is for 3D meshes: in 2D a body turns about the"
-            << " plane's normal through centre. Remove axis" << exit(FatalIOError);
-    }
+    // the same rotations about the axis; the blend's centre level with the
+    // body's middle, where its farthest point is nearer than at an end (a
+    // wing pitching about its span axis: near mid-span, not the root)
     Eigen::Vector3d e;
     projection_.toCore(axis, e.data());
     const point given(projection_.pointFromCore(centres_[b].data()));
     centres_[b] += e*e.dot(centroid(b) - centres_[b]);
-    Info<< "    " << bodyNames_[b] << ": centre " << given << " moved along axis "
-        << axis << " to " << projection_.pointFromCore(centres_[b].data())
+    Info<< "dcpRBF: rotationInterpolation: body " << bodyNames_[b] << ": centre "
+        << given << " moved along its axis (unit " << axis << ") to "
+        << projection_.pointFromCore(centres_[b].data())
         << ", level with the centroid of the body's points" << endl;
 }
 
