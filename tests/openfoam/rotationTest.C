@@ -19,6 +19,9 @@ Description
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+#include <sstream>
+
 using namespace Foam;
 using namespace Foam::dcpRBFTest;
 
@@ -183,6 +186,56 @@ TEST(RotatingBody, AxisCentresTheBlendLevelWithTheCentroid)
     EXPECT_LT(max(mag(onAxis - level)), 1e-12);
     EXPECT_LT(max(mag(body - level)), 1e-12) << "axis in a bodies entry";
     EXPECT_GT(max(mag(root - level)), 1e-3) << "the centre does not change the mesh";
+}
+
+
+TEST(RotatingBody, TurningOffTheAxisIsWarnedAboutOnce)
+{
+    // the bottom turns about z, 15 deg per step; axis (1 0 0) is the wrong
+    // pivot axis: a warning names axis, once in two steps; axis (0 0 1): none
+    const auto warnings = [](const std::string& axis)
+    {
+        testCase c
+        (
+            3, 4,
+            "movingPatches (bottom); staticPatches (top);"
+            " function WendlandC2; supportRadius 2; polynomial true;"
+            " controlPoints { selection greedy; } rotationInterpolation true;"
+            " rotation { centre (0.5 0 0); axis " + axis + "; }"
+        );
+        autoPtr<motionSolver> ms(select(c));
+        auto& solver = refCast<dcpRBFMotionSolver>(ms());
+        // (warnings go to stdout in v1912, to stderr in newer versions)
+        std::ostringstream out;
+        std::streambuf* const wasOut = std::cout.rdbuf(out.rdbuf());
+        std::streambuf* const wasErr = std::cerr.rdbuf(out.rdbuf());
+        for (const scalar deg : {15, 30})
+        {
+            c.runTime()++;
+            prescribe
+            (
+                solver.pointDisplacement(), "bottom",
+                makeMap(vector(0, 0, 1), deg, point(0.5, 0, 0), Zero)
+            );
+            ms->newPoints();
+        }
+        std::cout.rdbuf(wasOut);
+        std::cerr.rdbuf(wasErr);
+        const std::string log(out.str());
+        label n = 0;
+        for
+        (
+            std::size_t at = log.find("off its keyword axis");
+            at != std::string::npos;
+            at = log.find("off its keyword axis", at + 1)
+        )
+        {
+            ++n;
+        }
+        return n;
+    };
+    EXPECT_EQ(warnings("(1 0 0)"), 1);
+    EXPECT_EQ(warnings("(0 0 1)"), 0);
 }
 
 } // namespace
