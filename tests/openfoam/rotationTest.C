@@ -238,4 +238,39 @@ TEST(RotatingBody, TurningOffTheAxisIsWarnedAboutOnce)
     EXPECT_EQ(warnings("(0 0 1)"), 0);
 }
 
+
+TEST(RotatingBody, AxisHintedWhereItHelps)
+{
+    // no axis: the bottom turns 15 deg about the z axis through (0.5 0 0);
+    // with the centre (0.5 0 0), axis (0 0 1) would move it to (0.5 0 0.5),
+    // the farthest point 0.71 instead of 1.12 away: a hint naming axis; with
+    // the centre (0.5 0 0.5), on the same axis and already level: none
+    const auto hints = [](const std::string& centre)
+    {
+        testCase c
+        (
+            3, 4,
+            "movingPatches (bottom); staticPatches (top);"
+            " function WendlandC2; supportRadius 2; polynomial true;"
+            " controlPoints { selection greedy; } rotationInterpolation true;"
+            " rotation { centre " + centre + "; }"
+        );
+        autoPtr<motionSolver> ms(select(c));
+        auto& solver = refCast<dcpRBFMotionSolver>(ms());
+        std::ostringstream out;
+        std::streambuf* const wasOut = std::cout.rdbuf(out.rdbuf());
+        c.runTime()++;
+        prescribe
+        (
+            solver.pointDisplacement(), "bottom",
+            makeMap(vector(0, 0, 1), 15, point(0.5, 0, 0), Zero)
+        );
+        ms->newPoints();
+        std::cout.rdbuf(wasOut);
+        return out.str().find("Hint: axis (0 0 1)") != std::string::npos;
+    };
+    EXPECT_TRUE(hints("(0.5 0 0)"));
+    EXPECT_FALSE(hints("(0.5 0 0.5)"));
+}
+
 } // namespace

@@ -12,8 +12,6 @@ License
 #include "unitConversion.H"
 #include "mathematicalConstants.H"
 
-#include <Eigen/Geometry>
-
 #include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
@@ -203,32 +201,6 @@ dcprbf::Values Foam::dcpRBFRotation::fit(const dcprbf::Values& d)
 
     dcprbf::blendedRigidDisplacement(turns, evalPoints_, weights_, displacement_);
     return rest;
-}
-
-
-void Foam::dcpRBFRotation::checkAxis(const label b)
-{
-    // the axis placed the centre: a body turning about another axis (by
-    // more than 1 deg, 10 deg off) has its centre off the pivot
-    const Eigen::Vector3d& w = motions_[b].rotation;
-    const Eigen::Vector3d& e = axes_[b];
-    if (offAxisWarned_[b] || e.isZero() || w.norm() < degToRad(1.0))
-    {
-        return;
-    }
-    const scalar off = radToDeg(std::atan2(w.cross(e).norm(), std::abs(w.dot(e))));
-    if (off > 10)
-    {
-        offAxisWarned_[b] = true;
-        const Eigen::Vector3d u(w.normalized());
-        WarningInFunction
-            << "Body " << bodyNames_[b] << " turns about "
-            << projection_.fromCore(u.data()) << ", " << off << " deg off its"
-            << " keyword axis " << projection_.fromCore(e.data()) << ": the"
-            << " centre was moved along that axis, off the pivot, and the"
-            << " translation about it is interpolated with the rest. Give the"
-            << " axis the body turns about, or remove axis (warned once)" << endl;
-    }
 }
 
 

@@ -273,22 +273,6 @@ void Foam::dcpRBFRotation::readCentre(const label b, const dictionary& body)
 }
 
 
-void Foam::dcpRBFRotation::levelWithCentroid(const label b, const vector& axis)
-{
-    // the same rotations about the axis; the blend's centre level with the
-    // body's middle, where its farthest point is nearer than at an end (a
-    // wing pitching about its span axis: near mid-span, not the root)
-    Eigen::Vector3d& e = axes_[b];
-    projection_.toCore(axis, e.data());
-    const point given(projection_.pointFromCore(centres_[b].data()));
-    centres_[b] += e*e.dot(centroid(b) - centres_[b]);
-    Info<< "dcpRBF: rotationInterpolation: body " << bodyNames_[b] << ": centre "
-        << given << " moved along its axis (unit " << axis << ") to "
-        << projection_.pointFromCore(centres_[b].data())
-        << ", level with the centroid of the body's points" << endl;
-}
-
-
 void Foam::dcpRBFRotation::readBodies
 (
     const polyMesh& mesh,
@@ -306,7 +290,7 @@ void Foam::dcpRBFRotation::readBodies
     assignCandidates(mark, groups.size());
     centres_.resize(groups.size());
     axes_.assign(groups.size(), Eigen::Vector3d::Zero());
-    offAxisWarned_.assign(groups.size(), false);
+    axisChecked_.assign(groups.size(), false);
     forAll(groups, b)
     {
         readCentre(b, *bodyDicts[b]);
