@@ -334,15 +334,10 @@ TEST(BadInput, EditWhileRunningIsNamed)
             "dynamicFvMesh dynamicMotionSolverFvMesh;\nmotionSolver dcpRBF;\n"
             "dcpRBFCoeffs\n{\n" + now + "\n}\n"
         );
-        // (warnings go to stdout in v1912, to stderr in newer versions)
-        std::ostringstream out;
-        std::streambuf* const wasOut = std::cout.rdbuf(out.rdbuf());
-        std::streambuf* const wasErr = std::cerr.rdbuf(out.rdbuf());
-        const bool ok = ms->read();
-        std::cout.rdbuf(wasOut);
-        std::cerr.rdbuf(wasErr);
+        bool ok = false;
+        const std::string log(captured([&]() { ok = ms->read(); }));
         EXPECT_TRUE(ok);
-        return out.str();
+        return log;
     };
     EXPECT_EQ(reread(coeffs + " supportRadius 0.5;"), "");
     const std::string log

@@ -19,8 +19,7 @@ Description
 
 #include <gtest/gtest.h>
 
-#include <iostream>
-#include <sstream>
+#include <vector>
 
 using namespace Foam;
 using namespace Foam::dcpRBFTest;
@@ -152,36 +151,78 @@ TEST(RotatingBody, RadialRingInnerCircleTurnsRigidlyOuterPointsStay)
 }
 
 
+//- A 3D box (n cells a side) whose bottom (y = 0, x and z in [0, 1]) turns
+//  about the z axis through (0.5 0 0), to each of the angles in turn, under
+//  rotationInterpolation with the given entries of rotation: the points
+//  after the last step, and what the solver wrote meanwhile
+struct turnedBottom
+{
+    pointField points;
+    std::string log;
+};
+
+turnedBottom turnBottom3D
+(
+    const label n,
+    const std::string& rotation,
+    const std::vector<scalar>& degrees
+)
+{
+    testCase c
+    (
+        3, n,
+        "movingPatches (bottom); staticPatches (top);"
+        " function WendlandC2; supportRadius 2; polynomial true;"
+        " controlPoints { selection greedy; } rotationInterpolation true;"
+        " rotation { " + rotation + " }"
+    );
+    autoPtr<motionSolver> ms(select(c));
+    auto& solver = refCast<dcpRBFMotionSolver>(ms());
+    turnedBottom result;
+    result.log = captured([&]()
+    {
+        for (const scalar deg : degrees)
+        {
+            c.runTime()++;
+            prescribe
+            (
+                solver.pointDisplacement(), "bottom",
+                makeMap(vector(0, 0, 1), deg, point(0.5, 0, 0), Zero)
+            );
+            result.points = ms->newPoints();
+        }
+    });
+    return result;
+}
+
+//- How often text occurs in log
+label occurrences(const std::string& log, const std::string& text)
+{
+    label n = 0;
+    for (auto at = log.find(text); at != std::string::npos; at = log.find(text, at + 1))
+    {
+        ++n;
+    }
+    return n;
+}
+
+
 TEST(RotatingBody, AxisCentresTheBlendLevelWithTheCentroid)
 {
-    // 3D: bottom (y = 0, x and z in [0, 1]) pitched 30 deg about the z axis
-    // through (0.5 0 0). With axis, the centre (0.5 0 0) moves along it to
-    // the point level with the bottom's centroid, (0.5 0 0.5): the mesh is
-    // the one that centre gives, and not the one (0.5 0 0) gives; the same
-    // in a bodies entry
-    const rigidMap f(makeMap(vector(0, 0, 1), 30, point(0.5, 0, 0), Zero));
-    auto newPoints = [&f](const std::string& rotation)
+    // pitched 30 deg. With axis, the centre (0.5 0 0) moves along it to the
+    // point level with the bottom's centroid, (0.5 0 0.5): the mesh is the
+    // one that centre gives, and not the one (0.5 0 0) gives; the same in a
+    // bodies entry
+    const auto points = [](const std::string& rotation)
     {
-        testCase c
-        (
-            3, 6,
-            "movingPatches (bottom); staticPatches (top);"
-            " function WendlandC2; supportRadius 2; polynomial true;"
-            " controlPoints { selection greedy; } rotationInterpolation true;"
-            " rotation { " + rotation + " }"
-        );
-        autoPtr<motionSolver> ms(select(c));
-        auto& solver = refCast<dcpRBFMotionSolver>(ms());
-        c.runTime()++;
-        prescribe(solver.pointDisplacement(), "bottom", f);
-        return pointField(ms->newPoints());
+        return turnBottom3D(6, rotation, {30}).points;
     };
-    const pointField onAxis(newPoints("centre (0.5 0 0); axis (0 0 2);"));
-    const pointField level(newPoints("centre (0.5 0 0.5);"));
-    const pointField root(newPoints("centre (0.5 0 0);"));
+    const pointField onAxis(points("centre (0.5 0 0); axis (0 0 2);"));
+    const pointField level(points("centre (0.5 0 0.5);"));
+    const pointField root(points("centre (0.5 0 0);"));
     const pointField body
     (
-        newPoints("bodies { b { patches (bottom); centre (0.5 0 0); axis (0 0 1); } }")
+        points("bodies { b { patches (bottom); centre (0.5 0 0); axis (0 0 1); } }")
     );
     EXPECT_LT(max(mag(onAxis - level)), 1e-12);
     EXPECT_LT(max(mag(body - level)), 1e-12) << "axis in a bodies entry";
@@ -191,48 +232,15 @@ TEST(RotatingBody, AxisCentresTheBlendLevelWithTheCentroid)
 
 TEST(RotatingBody, TurningOffTheAxisIsWarnedAboutOnce)
 {
-    // the bottom turns about z, 15 deg per step; axis (1 0 0) is the wrong
-    // pivot axis: a warning names axis, once in two steps; axis (0 0 1): none
+    // 15 then 30 deg; axis (1 0 0) is the wrong pivot axis: a warning names
+    // axis, once in the two steps; axis (0 0 1): none
     const auto warnings = [](const std::string& axis)
     {
-        testCase c
+        const std::string log
         (
-            3, 4,
-            "movingPatches (bottom); staticPatches (top);"
-            " function WendlandC2; supportRadius 2; polynomial true;"
-            " controlPoints { selection greedy; } rotationInterpolation true;"
-            " rotation { centre (0.5 0 0); axis " + axis + "; }"
+            turnBottom3D(4, "centre (0.5 0 0); axis " + axis + ";", {15, 30}).log
         );
-        autoPtr<motionSolver> ms(select(c));
-        auto& solver = refCast<dcpRBFMotionSolver>(ms());
-        // (warnings go to stdout in v1912, to stderr in newer versions)
-        std::ostringstream out;
-        std::streambuf* const wasOut = std::cout.rdbuf(out.rdbuf());
-        std::streambuf* const wasErr = std::cerr.rdbuf(out.rdbuf());
-        for (const scalar deg : {15, 30})
-        {
-            c.runTime()++;
-            prescribe
-            (
-                solver.pointDisplacement(), "bottom",
-                makeMap(vector(0, 0, 1), deg, point(0.5, 0, 0), Zero)
-            );
-            ms->newPoints();
-        }
-        std::cout.rdbuf(wasOut);
-        std::cerr.rdbuf(wasErr);
-        const std::string log(out.str());
-        label n = 0;
-        for
-        (
-            std::size_t at = log.find("off its keyword axis");
-            at != std::string::npos;
-            at = log.find("off its keyword axis", at + 1)
-        )
-        {
-            ++n;
-        }
-        return n;
+        return occurrences(log, "off its keyword axis");
     };
     EXPECT_EQ(warnings("(1 0 0)"), 1);
     EXPECT_EQ(warnings("(0 0 1)"), 0);
@@ -241,36 +249,17 @@ TEST(RotatingBody, TurningOffTheAxisIsWarnedAboutOnce)
 
 TEST(RotatingBody, AxisHintedWhereItHelps)
 {
-    // no axis: the bottom turns 15 deg about the z axis through (0.5 0 0);
-    // with the centre (0.5 0 0), axis (0 0 1) would move it to (0.5 0 0.5),
-    // the farthest point 0.71 instead of 1.12 away: a hint naming axis; with
-    // the centre (0.5 0 0.5), on the same axis and already level: none
+    // no axis, 15 deg: with the centre (0.5 0 0), axis (0 0 1) would move it
+    // to (0.5 0 0.5), the farthest point 0.71 instead of 1.12 away: a hint
+    // naming axis; with the centre (0.5 0 0.5), on the same axis and already
+    // level: none
     const auto hints = [](const std::string& centre)
     {
-        testCase c
-        (
-            3, 4,
-            "movingPatches (bottom); staticPatches (top);"
-            " function WendlandC2; supportRadius 2; polynomial true;"
-            " controlPoints { selection greedy; } rotationInterpolation true;"
-            " rotation { centre " + centre + "; }"
-        );
-        autoPtr<motionSolver> ms(select(c));
-        auto& solver = refCast<dcpRBFMotionSolver>(ms());
-        std::ostringstream out;
-        std::streambuf* const wasOut = std::cout.rdbuf(out.rdbuf());
-        c.runTime()++;
-        prescribe
-        (
-            solver.pointDisplacement(), "bottom",
-            makeMap(vector(0, 0, 1), 15, point(0.5, 0, 0), Zero)
-        );
-        ms->newPoints();
-        std::cout.rdbuf(wasOut);
-        return out.str().find("Hint: axis (0 0 1)") != std::string::npos;
+        const std::string log(turnBottom3D(4, "centre " + centre + ";", {15}).log);
+        return occurrences(log, "Hint: axis (0 0 1)");
     };
-    EXPECT_TRUE(hints("(0.5 0 0)"));
-    EXPECT_FALSE(hints("(0.5 0 0.5)"));
+    EXPECT_EQ(hints("(0.5 0 0)"), 1);
+    EXPECT_EQ(hints("(0.5 0 0.5)"), 0);
 }
 
 } // namespace
