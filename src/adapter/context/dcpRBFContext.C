@@ -22,7 +22,7 @@ Foam::dcpRBFContext::dcpRBFContext
 :
     mesh_(mesh),
     coeffs_(coeffs),
-    pointDisplacement_(pointDisplacement),
+    stepMesh_(pointDisplacement),
     points0_(points0),
     debug_(debug),
     region_(mesh, coeffs, solverDict),

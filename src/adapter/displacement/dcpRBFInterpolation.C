@@ -28,7 +28,7 @@ Foam::dcpRBFInterpolation::dcpRBFInterpolation
     controlPoints_(controlPoints),
     rotation_(rotation),
     prescribed_(prescribed),
-    pointDisplacement_(context.pointDisplacement()),
+    stepMesh_(context.stepMesh()),
     stored_
     (
         settings_.kernel(), controlPoints.evaluator().polynomial(),
@@ -139,7 +139,7 @@ Foam::scalar Foam::dcpRBFInterpolation::interpolate
     const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
     const std::size_t budget = controlPoints_.storageBudget();
     const bool stored = stored_.prepare(s.centres(), budget);
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    vectorField& disp = stepMesh_.change().primitiveFieldRef();
     if
     (
         stored && writesRowsToPoints() && disp.size()
@@ -183,7 +183,7 @@ Foam::scalar Foam::dcpRBFInterpolation::correct
 {
     // Error at this processor's block of the boundary points, blended
     // into the volume (the correction fetches the errors its points need)
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    vectorField& disp = stepMesh_.change().primitiveFieldRef();
     const label b0 = controlPoints_.block().begin();
     const dcprbf::Values error
     (
@@ -211,7 +211,7 @@ Foam::scalar Foam::dcpRBFInterpolation::correct
 void Foam::dcpRBFInterpolation::rigid()
 {
     // Rigid bodies: the blended rigid motions alone
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    vectorField& disp = stepMesh_.change().primitiveFieldRef();
     forAll(disp, pointi)
     {
         disp[pointi] =
@@ -275,12 +275,8 @@ Foam::scalar Foam::dcpRBFInterpolation::correct
     vectorField& field
 )
 {
-    // (exchanged, not copied)
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
-    disp.swap(field);
-    const scalar error = correct(d);
-    disp.swap(field);
-    return error;
+    const dcpRBFStepMesh::loan inPlace(stepMesh_, field);
+    return correct(d);
 }
 
 

@@ -26,11 +26,11 @@ Foam::dcpRBFPrescribedDisplacement::dcpRBFPrescribedDisplacement
     projection_(context.projection()),
     boundaryPoints_(context.boundaryPoints()),
     region_(context.region()),
-    pointDisplacement_(context.pointDisplacement()),
-    slipPatches_(pointDisplacement_, context.points0()),
+    stepMesh_(context.stepMesh()),
+    slipPatches_(stepMesh_.field(), context.points0()),
     slipCorrection_
     (
-        mesh_, pointDisplacement_, projection_, boundaryPoints_,
+        mesh_, stepMesh_.field(), projection_, boundaryPoints_,
         settings_.movingPatchIDs(), settings_.staticPatchIDs(),
         context.evalPoints(), context.points0(), settings_.kernel().radius()
     )
@@ -106,7 +106,7 @@ void Foam::dcpRBFPrescribedDisplacement::checkMovingPatch
             << exit(FatalIOError);
     }
     const pointPatchVectorField& condition =
-        pointDisplacement_.boundaryField()[pp.index()];
+        stepMesh_.field().boundaryField()[pp.index()];
     if (!condition.fixesValue())
     {
         FatalIOErrorInFunction(dict)
@@ -129,7 +129,7 @@ void Foam::dcpRBFPrescribedDisplacement::checkPatches(const dictionary& dict)
 {
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
     const pointVectorField::Boundary& conditions =
-        pointDisplacement_.boundaryField();
+        stepMesh_.field().boundaryField();
     wordList unlisted;
     // (touches() is collective: not over the processor patches, whose
     // number differs between processors)
@@ -202,8 +202,8 @@ void Foam::dcpRBFPrescribedDisplacement::read()
 {
     // The only evaluation of the conditions this step: constrain() and
     // finish() insert the values without
-    // re-evaluating
-    pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
+    // re-evaluating. The step's mesh is new from here
+    pointVectorField::Boundary& bf = stepMesh_.change().boundaryFieldRef();
     bf.updateCoeffs();
 
     // Only moving points hold a value: zero elsewhere once, then only the
@@ -245,14 +245,15 @@ void Foam::dcpRBFPrescribedDisplacement::read()
 
 void Foam::dcpRBFPrescribedDisplacement::constrain()
 {
-    pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
+    pointVectorField& pointDisplacement = stepMesh_.change();
+    pointVectorField::Boundary& bf = pointDisplacement.boundaryFieldRef();
     forAll(bf, patchi)
     {
         // each sliding patch's change kept for dcpRBFSlipCorrection
-        slipCorrection_.keep(patchi, pointDisplacement_.primitiveField());
+        slipCorrection_.keep(patchi, pointDisplacement.primitiveField());
         if (slipPatches_.handles(patchi))
         {
-            slipPatches_.evaluate(pointDisplacement_, patchi);
+            slipPatches_.evaluate(pointDisplacement, patchi);
         }
         else if (!bf[patchi].fixesValue())
         {
@@ -265,24 +266,24 @@ void Foam::dcpRBFPrescribedDisplacement::constrain()
             // measured, as the final constraints put it
             bf[patchi].setInInternalField
             (
-                pointDisplacement_.primitiveFieldRef(),
+                pointDisplacement.primitiveFieldRef(),
                 refCast<const valuePointPatchField<vector>>(bf[patchi])
             );
         }
-        slipCorrection_.record(patchi, pointDisplacement_.primitiveField());
+        slipCorrection_.record(patchi, pointDisplacement.primitiveField());
     }
-    const pointConstraints& pcs = pointConstraints::New(pointDisplacement_.mesh());
+    const pointConstraints& pcs = pointConstraints::New(pointDisplacement.mesh());
     pointConstraints::syncUntransformedData
     (
-        mesh_, pointDisplacement_.primitiveFieldRef(), maxMagSqrEqOp<vector>()
+        mesh_, pointDisplacement.primitiveFieldRef(), maxMagSqrEqOp<vector>()
     );
-    pcs.constrainCorners(pointDisplacement_);
+    pcs.constrainCorners(pointDisplacement);
 }
 
 
 void Foam::dcpRBFPrescribedDisplacement::constrainInterpolated()
 {
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
+    vectorField& disp = stepMesh_.change().primitiveFieldRef();
     constrain();
     if (slipCorrection_.apply(projection_, disp) > 0 && slipCorrection_.size() > 1)
     {
@@ -302,7 +303,7 @@ void Foam::dcpRBFPrescribedDisplacement::insert(vectorField& disp) const
 }
 
 
-bool Foam::dcpRBFPrescribedDisplacement::finish(const bool measured)
+void Foam::dcpRBFPrescribedDisplacement::finish()
 {
     // The fixed-value conditions' values inserted (not re-evaluated: this
     // completes the step's one evaluation), the constraints applied as
@@ -315,20 +316,18 @@ bool Foam::dcpRBFPrescribedDisplacement::finish(const bool measured)
     // values below.) Then the listed patches' rule, the same on every
     // processor: moving points where prescribed (also where a static
     // patch's condition says otherwise), static points in place
-    vectorField& disp = pointDisplacement_.primitiveFieldRef();
-    bool unchanged = measured;
-    if (measured)
+    const label version = stepMesh_.version();
+    pointVectorField& pointDisplacement = stepMesh_.change();
+    vectorField& disp = pointDisplacement.primitiveFieldRef();
+    // the only points this can change
+    finishedBefore_.setSize(finishedPoints_.size());
+    forAll(finishedPoints_, i)
     {
-        // the only points this can change
-        finishedBefore_.setSize(finishedPoints_.size());
-        forAll(finishedPoints_, i)
-        {
-            finishedBefore_[i] = disp[finishedPoints_[i]];
-        }
+        finishedBefore_[i] = disp[finishedPoints_[i]];
     }
-    pointDisplacement_.setUpToDate();
-    pointDisplacement_.storeOldTimes();
-    pointVectorField::Boundary& bf = pointDisplacement_.boundaryFieldRef();
+    pointDisplacement.setUpToDate();
+    pointDisplacement.storeOldTimes();
+    pointVectorField::Boundary& bf = pointDisplacement.boundaryFieldRef();
     forAll(bf, patchi)
     {
         if (bf[patchi].fixesValue())
@@ -338,13 +337,17 @@ bool Foam::dcpRBFPrescribedDisplacement::finish(const bool measured)
     }
     constrain();
     insert(disp);
+    bool unchanged = true;
     for (label i = 0; unchanged && i < finishedPoints_.size(); ++i)
     {
         // bitwise, as the measured points were made
         unchanged =
             std::memcmp(&finishedBefore_[i], &disp[finishedPoints_[i]], sizeof(vector)) == 0;
     }
-    return unchanged;
+    if (unchanged)
+    {
+        stepMesh_.unchanged(version);
+    }
 }
 
 

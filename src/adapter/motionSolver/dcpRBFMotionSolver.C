@@ -145,7 +145,6 @@ void Foam::dcpRBFMotionSolver::moveWithControlPoints
     timer_->split(&part::select);
 
     // Interpolate and correct (the boundary snapped, the constraints)
-    quality_->changed();
     step.boundaryError = interpolation_->interpolate(d);
     timer_->split(&part::interpolate);
     if (debug)
@@ -234,7 +233,8 @@ void Foam::dcpRBFMotionSolver::solve()
     {
         // Nothing moves yet: every point but the moving ones stays put,
         // unless a patch in neither list is moved by its own condition
-        pointDisplacement_.primitiveFieldRef() = prescribed_->values();
+        context_->stepMesh().change().primitiveFieldRef() =
+            prescribed_->values();
         if (prescribed_->selfMoved().size())
         {
             prescribed_->constrain();
@@ -245,11 +245,8 @@ void Foam::dcpRBFMotionSolver::solve()
     }
 
     // The conditions' last word; the measured points stay the new points
-    // if it changed nothing
-    if (!prescribed_->finish(quality_->measured()))
-    {
-        quality_->changed();
-    }
+    // if it changed nothing (the step's mesh keeps its version)
+    prescribed_->finish();
     cellDisplacement_->update();
     timer_->split(&part::points);
     if (!inNewPoints_)

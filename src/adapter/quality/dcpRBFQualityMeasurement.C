@@ -34,12 +34,11 @@ Foam::dcpRBFQualityMeasurement::dcpRBFQualityMeasurement
         &context.region()
     ),
     twoDPoints_(context.twoDPoints()),
-    pointDisplacement_(context.pointDisplacement()),
+    stepMesh_(context.stepMesh()),
     points0_(context.points0()),
     nRanked_(max(label(1), context.settings().selection().nSwap)),
     nLowest_(-1),
     rankBest_(true),
-    measured_(false),
     measuredInStep_(false),
     checkTime_(0),
     nMeasurements_(0)
@@ -52,23 +51,26 @@ void Foam::dcpRBFQualityMeasurement::measureRegion(const pointField& p)
 {
     // the qualities into the last measurement's storage
     const label lowest = mesh_.time().writeTime() ? -1 : nLowest_;
-    last_ = region_.measure(p, nRanked_, std::move(last_.quality), lowest, rankBest_);
+    last_.summary = region_.measure
+    (
+        p, nRanked_, std::move(last_.summary.quality), lowest, rankBest_
+    );
 }
 
 
 void Foam::dcpRBFQualityMeasurement::currentPoints(pointField& p) const
 {
     // points0 + displacement (as Field's operator+), 2D corrected
-    twoDPoints_.move(points0_, pointDisplacement_.primitiveField(), p);
+    twoDPoints_.move(points0_, stepMesh_.displacement(), p);
 }
 
 
 void Foam::dcpRBFQualityMeasurement::measureLast()
 {
     clockTime timer;
-    measured_ = true;
+    last_.version = stepMesh_.version();
     measuredInStep_ = true;
-    measureRegion(lastPoints_);
+    measureRegion(last_.points);
     ++nMeasurements_;
     checkTime_ += timer.elapsedTime();
 }
@@ -76,7 +78,6 @@ void Foam::dcpRBFQualityMeasurement::measureLast()
 
 void Foam::dcpRBFQualityMeasurement::startStep()
 {
-    measured_ = false;
     measuredInStep_ = false;
 }
 
@@ -84,7 +85,7 @@ void Foam::dcpRBFQualityMeasurement::startStep()
 void Foam::dcpRBFQualityMeasurement::measure()
 {
     clockTime timer;
-    currentPoints(lastPoints_);
+    currentPoints(last_.points);
     checkTime_ += timer.elapsedTime();
     measureLast();
 }
@@ -92,7 +93,7 @@ void Foam::dcpRBFQualityMeasurement::measure()
 
 void Foam::dcpRBFQualityMeasurement::measure(pointField& points)
 {
-    lastPoints_.transfer(points);
+    last_.points.transfer(points);
     measureLast();
 }
 
@@ -101,18 +102,19 @@ const Foam::dcpRBFQualityRegion::summary&
 Foam::dcpRBFQualityMeasurement::current()
 {
     const pointField& p = mesh_.points();
-    bool same = lastPoints_.size() == p.size();
+    const pointField& last = last_.points;
+    bool same = last.size() == p.size();
     for (label i = 0; same && i < p.size(); ++i)
     {
-        same = (p[i] == lastPoints_[i]);
+        same = (p[i] == last[i]);
     }
     if (!returnReduce(same, andOp<bool>()))
     {
         measureRegion(p);
-        lastPoints_ = p;
-        measured_ = false;     // the mesh's points: none of ours
+        last_.points = p;
+        last_.version = -1;     // the mesh's points: no version of ours
     }
-    return last_;
+    return last_.summary;
 }
 
 

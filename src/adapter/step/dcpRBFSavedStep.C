@@ -12,16 +12,15 @@ License
 
 Foam::dcpRBFSavedStep::dcpRBFSavedStep
 (
+    dcpRBFStepMesh& mesh,
     dcpRBFQualityMeasurement& quality,
-    vectorField& displacement,
     scalar& boundaryError
 )
 :
+    mesh_(mesh),
     quality_(quality),
-    displacement_(displacement),
     boundaryError_(boundaryError),
-    savedDisplacement_(displacement),
-    measured_(quality.measured()),
+    saved_(mesh.save()),
     savedBoundaryError_(boundaryError),
     done_(false)
 {}
@@ -39,11 +38,7 @@ Foam::dcpRBFSavedStep::~dcpRBFSavedStep()
 
 void Foam::dcpRBFSavedStep::setMeasurementAside()
 {
-    measurement_.reset
-    (
-        new dcpRBFQualityRegion::summary(std::move(quality_.last_))
-    );
-    measuredPoints_.transfer(quality_.lastPoints_);
+    measurement_.reset(new dcpRBFQualityMeasurement::taken(quality_.take()));
 }
 
 
@@ -54,13 +49,11 @@ void Foam::dcpRBFSavedStep::restore()
         return;
     }
     done_ = true;
-    displacement_.transfer(savedDisplacement_);
+    mesh_.restore(std::move(saved_));
     if (measurement_)
     {
-        quality_.last_ = std::move(*measurement_);
-        quality_.lastPoints_.transfer(measuredPoints_);
+        quality_.putBack(std::move(*measurement_));
     }
-    quality_.measured_ = measured_;
     boundaryError_ = savedBoundaryError_;
 }
 

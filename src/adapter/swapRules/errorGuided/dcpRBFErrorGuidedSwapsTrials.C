@@ -25,13 +25,6 @@ bool Foam::dcpRBFErrorGuidedSwaps::canTrial(const bool rescue) const
 }
 
 
-Foam::scalar Foam::dcpRBFErrorGuidedSwaps::interpolate(const dcprbf::Values& d)
-{
-    quality_.changed();
-    return interpolation_.interpolate(d);
-}
-
-
 Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
 (
     const dcprbf::Values& d,
@@ -64,7 +57,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     dcpRBFTrialMesh mesh
     (
         context_, quality_, interpolation_,
-        atWindow ? &windowInterpolation_ : nullptr, d, measured
+        atWindow ? &windowInterpolation_ : nullptr, d
     );
     // unmeasured: an inverted cell in the window without swaps: the mesh is
     // measured and rescued instead (afterInterpolate())
@@ -73,11 +66,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
         quality_.measure(mesh.current());
         return 0;
     }
-    dcpRBFSavedStep noSwaps
-    (
-        quality_, context_.pointDisplacement().primitiveFieldRef(),
-        step.boundaryError
-    );
+    dcpRBFSavedStep noSwaps(context_.stepMesh(), quality_, step.boundaryError);
 
     // Rescue during a blend: the blend ends at once, the trials start from
     // the new set's mesh (the blend is put back if nothing beats the mesh
@@ -161,10 +150,10 @@ bool Foam::dcpRBFErrorGuidedSwaps::trial
 )
 {
     // the trial's mesh
-    const bool setBefore = mesh.solved();
     controlPoints_.solve(ts.d);
     const scalar error0 = ts.state.boundaryError;
-    const pointField& p = mesh.ofSet(mesh.window().points());
+    const dcpRBFTrialMesh::made m(mesh.ofSet(mesh.window().points()));
+    const pointField& p = m.points;
     ts.state.boundaryError = mesh.error();
     const dcpRBFRankedCell w(mesh.window().worst(p));
     const bool improves = w.quality() > mesh.worst().quality();
@@ -183,14 +172,13 @@ bool Foam::dcpRBFErrorGuidedSwaps::trial
     {
         trials_.keep();
         controlPoints_.setChanged();
-        mesh.keep(p, w);
+        mesh.keep(m, w);
         return true;
     }
-    // the set as before the trial: so is the displacement if the trial
-    // did not change it
+    // the set as before the trial (the displacement holds its mesh if the
+    // trial did not change it: its version tells)
     trials_.undo();
     controlPoints_.solve(ts.d);
-    mesh.undone(setBefore);
     ts.state.boundaryError = error0;
     return false;
 }
@@ -216,7 +204,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::keepIfBetter
     const label blendSteps = context_.settings().selection().swapBlendSteps;
     if ((kept && !ts.rescue && blendSteps > 1) || !mesh.fieldIsSet())
     {
-        ts.state.boundaryError = interpolate(ts.d);
+        ts.state.boundaryError = interpolation_.interpolate(ts.d);
     }
     quality_.measure();
     // better than the window without swaps (and valid) is better than the
@@ -260,10 +248,10 @@ bool Foam::dcpRBFErrorGuidedSwaps::beatsUnswapped
 )
 {
     // the swapped mesh aside, the mesh without swaps measured in its place
-    vectorField& disp = context_.pointDisplacement().primitiveFieldRef();
-    dcpRBFSavedStep swapped(quality_, disp, step.boundaryError);
+    dcpRBFStepMesh& stepMesh = context_.stepMesh();
+    dcpRBFSavedStep swapped(stepMesh, quality_, step.boundaryError);
     swapped.setMeasurementAside();
-    disp = noSwaps.displacement();
+    stepMesh.change().primitiveFieldRef() = noSwaps.displacement();
     step.boundaryError = noSwaps.boundaryError();
     quality_.measure();
     // (without swaps inverted: abandoned, the rescue follows, as it would

@@ -16,13 +16,13 @@ Foam::dcpRBFTrialMesh::dcpRBFTrialMesh
     dcpRBFQualityMeasurement& quality,
     dcpRBFInterpolation& interpolation,
     dcpRBFWindowInterpolation* windowInterpolation,
-    const dcprbf::Values& d,
-    const bool measured
+    const dcprbf::Values& d
 )
 :
     quality_(quality),
     interpolation_(interpolation),
     windowInterpolation_(windowInterpolation),
+    stepMesh_(context.stepMesh()),
     d_(d),
     window_
     (
@@ -31,13 +31,13 @@ Foam::dcpRBFTrialMesh::dcpRBFTrialMesh
     ),
     complete_(true),
     startMin_(1),
-    fieldIsSet_(true),
+    keptVersion_(stepMesh_.version()),
     windowed_(false),
     error_(0)
 {
     // (assigned, not copy-constructed from a conditional: GCC 12 with
     // v2506's FixedList reports the copy's elements maybe-uninitialized)
-    if (measured)
+    if (quality_.measured())
     {
         current_ = quality_.lastPoints();
         worst_ = quality_.last().worst[0];
@@ -53,7 +53,8 @@ Foam::dcpRBFTrialMesh::dcpRBFTrialMesh
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-const Foam::pointField& Foam::dcpRBFTrialMesh::ofSet(const labelUList& points)
+Foam::dcpRBFTrialMesh::made
+Foam::dcpRBFTrialMesh::ofSet(const labelUList& points)
 {
     if
     (
@@ -62,20 +63,18 @@ const Foam::pointField& Foam::dcpRBFTrialMesh::ofSet(const labelUList& points)
     )
     {
         windowed_ = true;
-        return windowInterpolation_->points();
+        return made{windowInterpolation_->points(), false};
     }
-    quality_.changed();
     error_ = interpolation_.interpolate(d_);
-    fieldIsSet_ = true;
     quality_.currentPoints(full_);
-    return full_;
+    return made{full_, true};
 }
 
 
 Foam::scalar Foam::dcpRBFTrialMesh::remake()
 {
-    quality_.changed();
     const scalar error = interpolation_.interpolate(d_);
+    keptVersion_ = stepMesh_.version();
     quality_.currentPoints(current_);
     worst_ = window_.worst(current_);
     return error;
@@ -98,38 +97,32 @@ void Foam::dcpRBFTrialMesh::addAround
         (
             all, window_.nAdded(), all.size() - window_.nAdded()
         );
-        const pointField& kept = ofSet(added);
-        if (&kept == &full_)
+        const made kept(ofSet(added));
+        if (kept.complete)
         {
+            keptVersion_ = stepMesh_.version();
             current_.transfer(full_);
             complete_ = true;
         }
         for (label i = 0; !complete_ && i < added.size(); ++i)
         {
-            current_[added[i]] = kept[added[i]];
+            current_[added[i]] = kept.points[added[i]];
         }
     }
     worst_ = std::min(worst_, window_.worstAdded(current_));
 }
 
 
-bool Foam::dcpRBFTrialMesh::solved()
-{
-    const bool setBefore = fieldIsSet_;
-    fieldIsSet_ = false;
-    return setBefore;
-}
-
-
 void Foam::dcpRBFTrialMesh::keep
 (
-    const pointField& p,
+    const made& m,
     const dcpRBFRankedCell& w
 )
 {
     worst_ = w;
-    if (&p == &full_)
+    if (m.complete)
     {
+        keptVersion_ = stepMesh_.version();
         current_.transfer(full_);
         complete_ = true;
     }
@@ -137,16 +130,11 @@ void Foam::dcpRBFTrialMesh::keep
     {
         for (const label pointi : window_.points())
         {
-            current_[pointi] = p[pointi];
+            current_[pointi] = m.points[pointi];
         }
+        keptVersion_ = -1;
         complete_ = false;
     }
-}
-
-
-void Foam::dcpRBFTrialMesh::undone(const bool setBefore)
-{
-    fieldIsSet_ = !fieldIsSet_ && setBefore;
 }
 
 
