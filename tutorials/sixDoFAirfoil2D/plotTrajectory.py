@@ -123,7 +123,8 @@ def main():
     rows, col = dcp_series()
     qmin = min(r[col["minQuality"]] for r in rows)
     motion = sum(r[col[k]] for r in rows for k in
-                 ("swapTime", "selectTime", "interpolateTime", "guardTime"))/len(rows)
+                 ("swapTime", "selectTime", "interpolateTime", "guardTime",
+                  "measureTime") if k in col)/len(rows)
     print("  dcpRBF: min cell quality %.4f, control points %d -> %d, mesh motion %.2f ms per step"
           % (qmin, rows[0][col["nControl"]], rows[-1][col["nControl"]], 1000*motion))
     print("  CPU time per step (ExecutionTime; both cases side by side on a shared machine):"

@@ -135,6 +135,11 @@ Foam::scalar Foam::dcpRBFInterpolation::interpolate
     const dcprbf::Values& d
 )
 {
+    if (!controlPoints_.ready())
+    {
+        withoutSet();
+        return 0;
+    }
     // evaluated once per distinct point (2D: the front and back twins)
     const dcprbf::RbfEvaluator& s = controlPoints_.evaluator();
     const std::size_t budget = controlPoints_.storageBudget();
@@ -208,10 +213,21 @@ Foam::scalar Foam::dcpRBFInterpolation::correct
 }
 
 
-void Foam::dcpRBFInterpolation::rigid()
+void Foam::dcpRBFInterpolation::withoutSet()
 {
-    // Rigid bodies: the blended rigid motions alone
     vectorField& disp = stepMesh_.change().primitiveFieldRef();
+    if (!rotation_.active())
+    {
+        // nothing moves yet: every point but the moving ones stays put,
+        // unless a patch in neither list is moved by its own condition
+        disp = prescribed_.values();
+        if (prescribed_.selfMoved().size())
+        {
+            prescribed_.constrain();
+        }
+        return;
+    }
+    // Rigid bodies: the blended rigid motions alone
     forAll(disp, pointi)
     {
         disp[pointi] =

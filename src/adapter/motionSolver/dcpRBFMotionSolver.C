@@ -130,62 +130,6 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::dcpRBFMotionSolver::moveWithControlPoints
-(
-    const dcprbf::Values& d
-)
-{
-    typedef dcpRBFStepTimer::times part;
-    dcpRBFStepState& step = step_;
-
-    // Select: the set solved for d, re-selected while the boundary error
-    // is too large
-    controlPoints_->solve(d);
-    step.nAdded += controlPoints_->reselect(d, step.atMaxPoints);
-    timer_->split(&part::select);
-
-    // Interpolate and correct (the boundary snapped, the constraints)
-    step.boundaryError = interpolation_->interpolate(d);
-    timer_->split(&part::interpolate);
-    if (debug)
-    {
-        memory_.report
-        (
-            interpolation_->storedBytes(), controlPoints_->block().storedBytes()
-        );
-    }
-
-    // Check: the new mesh's quality, unless the swap rule measures the
-    // mesh it keeps itself (one measurement)
-    const bool measured = swapRule_->measuresFirst();
-    if (measured)
-    {
-        quality_->measure();
-    }
-    timer_->split(&part::guard);
-
-    // Swap (swapRule errorGuided: trial swaps kept where they help)
-    swapRule_->afterInterpolate(d, step, measured);
-    timer_->split(&part::swap);
-    // (before the guard: what a later step's mesh without swaps is
-    // compared with, dcpRBFTrialSchedule::endWaitIfWorse)
-    const dcpRBFQualityRegion::summary* unguarded = quality_->inStep();
-    const scalar unguardedMin = unguarded ? unguarded->minQuality : 1;
-
-    // Guard
-    guard_->apply(d, step);
-    timer_->split(&part::guard);
-
-    step.nControl = controlPoints_->size();
-    controlPoints_->endStep();
-    swapRule_->endStep(unguardedMin);
-    if (mesh().time().writeTime())
-    {
-        writer_->write(controlPoints_->set(), d);
-    }
-}
-
-
 void Foam::dcpRBFMotionSolver::writeLog()
 {
     log_->write(step_, quality_->inStep(), timer_->elapsed());
@@ -198,49 +142,86 @@ void Foam::dcpRBFMotionSolver::solve()
 {
     typedef dcpRBFStepTimer::times part;
     step_ = dcpRBFStepState();
+    dcpRBFStepState& step = step_;
     quality_->startStep();
     timer_.reset(new dcpRBFStepTimer(*quality_));
 
     // Swap before the solve (swapRule nearest: from the mesh as it is)
-    swapRule_->beforeSolve(step_);
+    swapRule_->beforeSolve(step);
     timer_->split(&part::swap);
 
     // Prescribe: the step's boundary displacement (one evaluation of the
-    // conditions)
+    // conditions); the bodies' rigid motions blended, the RBF interpolates
+    // the rest
     prescribed_->read();
     dcprbf::Values d(context_->boundaryPoints().gather(prescribed_->values()));
     if (rotation_->active())
     {
-        // the bodies' rigid motions blended; the RBF interpolates the rest
         d = rotation_->fit(d);
         rotation_->report(Info);
     }
 
-    if (controlPoints_->select(d))
+    // Select: the set chosen once something moves, solved for d,
+    // re-selected while the boundary error is too large (no set: the null
+    // interpolant)
+    const bool interpolant = controlPoints_->select(d);
+    if (interpolant)
     {
-        moveWithControlPoints(d);
+        controlPoints_->solve(d);
+        step.nAdded += controlPoints_->reselect(d, step.atMaxPoints);
     }
-    else if (rotation_->active())
+    timer_->split(&part::select);
+
+    // Interpolate and correct (the boundary snapped, the constraints)
+    step.boundaryError = interpolation_->interpolate(d);
+    timer_->split(&part::interpolate);
+    if (debug && interpolant)
     {
-        // Rigid bodies: the blended rigid motions alone
-        interpolation_->rigid();
-        timer_->split(&part::interpolate);
+        memory_.report
+        (
+            interpolation_->storedBytes(), controlPoints_->block().storedBytes()
+        );
+    }
+
+    // Check: the new mesh's quality, unless nothing moves or the swap rule
+    // measures the mesh it keeps itself (one measurement)
+    const bool moves =
+        interpolant || rotation_->active() || prescribed_->selfMoved().size();
+    const bool measured =
+        moves && (!interpolant || swapRule_->measuresFirst());
+    if (measured)
+    {
         quality_->measure();
-        guard_->apply(d, step_);
+    }
+
+    // Swap (swapRule errorGuided: trial swaps kept where they help); what
+    // a later step's mesh without swaps is compared with is the quality
+    // before the guard (dcpRBFTrialSchedule::endWaitIfWorse)
+    scalar unguardedMin = 1;
+    if (interpolant)
+    {
+        swapRule_->afterInterpolate(d, step, measured);
+        timer_->split(&part::swap);
+        const dcpRBFQualityRegion::summary* unguarded = quality_->inStep();
+        unguardedMin = unguarded ? unguarded->minQuality : 1;
+    }
+
+    // Guard
+    if (moves)
+    {
+        guard_->apply(d, step);
         timer_->split(&part::guard);
     }
-    else
+
+    // End of step: the set's, the rule's, the control points written
+    if (interpolant)
     {
-        // Nothing moves yet: every point but the moving ones stays put,
-        // unless a patch in neither list is moved by its own condition
-        context_->stepMesh().change().primitiveFieldRef() =
-            prescribed_->values();
-        if (prescribed_->selfMoved().size())
+        step.nControl = controlPoints_->size();
+        controlPoints_->endStep();
+        swapRule_->endStep(unguardedMin);
+        if (mesh().time().writeTime())
         {
-            prescribed_->constrain();
-            quality_->measure();
-            guard_->apply(d, step_);
-            timer_->split(&part::guard);
+            writer_->write(controlPoints_->set(), d);
         }
     }
 

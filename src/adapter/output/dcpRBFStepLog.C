@@ -100,6 +100,7 @@ void Foam::dcpRBFStepLog::write
     line<< ", time [ms] swap " << ms(t.swap).c_str()
         << " select " << ms(t.select).c_str()
         << " interpolate " << ms(t.interpolate).c_str()
+        << " measure " << ms(t.measure).c_str()
         << " guard " << ms(t.guard).c_str()
         << " points " << ms(t.points).c_str();
     Info<< line.str().c_str() << endl;
@@ -122,7 +123,8 @@ void Foam::dcpRBFStepLog::write
             << "# dcpRBF motion solver, one row per step" << nl
             << "# time nControl nAdded nRemoved nGuard nCells minQuality"
             << " meanQuality boundaryError atMaxPoints swapTime selectTime"
-            << " interpolateTime guardTime nUndone pointsTime nInverted" << endl;
+            << " interpolateTime guardTime nUndone pointsTime nInverted"
+            << " measureTime" << endl;
     }
     file_()
         << time_.timeName() << ' ' << r.nControl << ' ' << r.nAdded << ' '
@@ -130,7 +132,8 @@ void Foam::dcpRBFStepLog::write
         << q.checkedMin << ' ' << q.checkedMean << ' ' << r.boundaryError
         << ' ' << label(r.atMaxPoints) << ' ' << t.swap << ' '
         << t.select << ' ' << t.interpolate << ' ' << t.guard
-        << ' ' << r.nUndone << ' ' << t.points << ' ' << q.checkedInverted << endl;
+        << ' ' << r.nUndone << ' ' << t.points << ' ' << q.checkedInverted
+        << ' ' << t.measure << endl;
 }
 
 

@@ -31,7 +31,7 @@ void Foam::dcpRBFStepTimer::split(scalar times::*part)
     const scalar checks = quality_.checkTime() - checkTime_;
     checkTime_ += checks;
     times_.*part += elapsed - checks;
-    times_.guard += checks;
+    times_.measure += checks;
 }
 
 
