@@ -35,50 +35,18 @@ namespace Foam
 
 void Foam::dcpRBFMotionSolver::construct()
 {
-    context_.reset
-    (
-        new dcpRBFContext
-        (
-            mesh(), *this, coeffDict(), pointDisplacement_, points0(), debug
-        )
-    );
-    const dcpRBFContext& c = *context_;
-    controlPoints_.reset(new dcpRBFControlPoints(c));
-    rotation_.reset(new dcpRBFRotation(c));
-    quality_.reset(new dcpRBFQualityMeasurement(c, rotation_->active()));
-    log_.reset(new dcpRBFStepLog(c.time()));
-    writer_.reset
-    (
-        new dcpRBFControlPointsWriter
-        (
-            c.time(), c.projection(), c.boundaryPoints()
-        )
-    );
-    prescribed_.reset(new dcpRBFPrescribedDisplacement(c));
-    interpolation_.reset
-    (
-        new dcpRBFInterpolation(c, *controlPoints_, *rotation_, *prescribed_)
-    );
-    frame_.reset(new dcpRBFFrame(c));
-    cellDisplacement_.reset(new dcpRBFCellDisplacement(pointDisplacement_));
-    swapRule_ = dcpRBFSwapRule::New
-    (
-        c, *controlPoints_, *quality_, *interpolation_
-    );
-    guard_.reset
-    (
-        new dcpRBFQualityGuard(c, *controlPoints_, *interpolation_, *quality_)
-    );
-
-    const dcpRBFQualityRegion& region = quality_->region();
+    // the construction checks, the quality's scan as the swap rule reads
+    // it, the set-up report
+    const dcpRBFContext& c = context_;
+    const dcpRBFQualityRegion& region = quality_.region();
     if (c.settings().scanLowest())
     {
-        quality_->measureLowest(swapRule_->lowestCells(region.nChecked()));
+        quality_.measureLowest(swapRule_->lowestCells(region.nChecked()));
     }
-    quality_->rankBest(swapRule_->readsBestCells());
+    quality_.rankBest(swapRule_->readsBestCells());
 
     setThreads();
-    prescribed_->checkPatches(coeffDict());
+    prescribed_.checkPatches(coeffDict());
     checkSetSize();
     checkRegion();
 
@@ -101,7 +69,11 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 )
 :
     displacementMotionSolver(withPointDisplacement(mesh), dict, typeName),
-    memory_(debug),
+    dcpRBFStages
+    (
+        mesh, *this, coeffDict(), pointDisplacement_, points0(), debug
+    ),
+    timer_(quality_),
     inNewPoints_(false),
     nReusedPoints_(0),
     coeffsAtStart_(coeffDict())
@@ -119,7 +91,11 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 )
 :
     displacementMotionSolver(mesh, dict, pointDisplacement, points0, typeName),
-    memory_(debug),
+    dcpRBFStages
+    (
+        mesh, *this, coeffDict(), pointDisplacement_, this->points0(), debug
+    ),
+    timer_(quality_),
     inNewPoints_(false),
     nReusedPoints_(0),
     coeffsAtStart_(coeffDict())
@@ -132,7 +108,7 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 
 void Foam::dcpRBFMotionSolver::writeLog()
 {
-    log_->write(step_, quality_->inStep(), timer_->elapsed());
+    log_.write(step_, quality_.inStep(), timer_.elapsed());
 }
 
 
@@ -143,55 +119,55 @@ void Foam::dcpRBFMotionSolver::solve()
     typedef dcpRBFStepTimer::times part;
     step_ = dcpRBFStepState();
     dcpRBFStepState& step = step_;
-    quality_->startStep();
-    timer_.reset(new dcpRBFStepTimer(*quality_));
+    quality_.startStep();
+    timer_.start();
 
     // Swap before the solve (swapRule nearest: from the mesh as it is)
     swapRule_->beforeSolve(step);
-    timer_->split(&part::swap);
+    timer_.split(&part::swap);
 
     // Prescribe: the step's boundary displacement (one evaluation of the
     // conditions); the bodies' rigid motions blended, the RBF interpolates
     // the rest
-    prescribed_->read();
-    dcprbf::Values d(context_->boundaryPoints().gather(prescribed_->values()));
-    if (rotation_->active())
+    prescribed_.read();
+    dcprbf::Values d(context_.boundaryPoints().gather(prescribed_.values()));
+    if (rotation_.active())
     {
-        d = rotation_->fit(d);
-        rotation_->report(Info);
+        d = rotation_.fit(d);
+        rotation_.report(Info);
     }
 
     // Select: the set chosen once something moves, solved for d,
     // re-selected while the boundary error is too large (no set: the null
     // interpolant)
-    const bool interpolant = controlPoints_->select(d);
+    const bool interpolant = controlPoints_.select(d);
     if (interpolant)
     {
-        controlPoints_->solve(d);
-        step.nAdded += controlPoints_->reselect(d, step.atMaxPoints);
+        controlPoints_.solve(d);
+        step.nAdded += controlPoints_.reselect(d, step.atMaxPoints);
     }
-    timer_->split(&part::select);
+    timer_.split(&part::select);
 
     // Interpolate and correct (the boundary snapped, the constraints)
-    step.boundaryError = interpolation_->interpolate(d);
-    timer_->split(&part::interpolate);
+    step.boundaryError = interpolation_.interpolate(d);
+    timer_.split(&part::interpolate);
     if (debug && interpolant)
     {
         memory_.report
         (
-            interpolation_->storedBytes(), controlPoints_->block().storedBytes()
+            interpolation_.storedBytes(), controlPoints_.block().storedBytes()
         );
     }
 
     // Check: the new mesh's quality, unless nothing moves or the swap rule
     // measures the mesh it keeps itself (one measurement)
     const bool moves =
-        interpolant || rotation_->active() || prescribed_->selfMoved().size();
+        interpolant || rotation_.active() || prescribed_.selfMoved().size();
     const bool measured =
         moves && (!interpolant || swapRule_->measuresFirst());
     if (measured)
     {
-        quality_->measure();
+        quality_.measure();
     }
 
     // Swap (swapRule errorGuided: trial swaps kept where they help); what
@@ -201,35 +177,35 @@ void Foam::dcpRBFMotionSolver::solve()
     if (interpolant)
     {
         swapRule_->afterInterpolate(d, step, measured);
-        timer_->split(&part::swap);
-        const dcpRBFQualityRegion::summary* unguarded = quality_->inStep();
+        timer_.split(&part::swap);
+        const dcpRBFQualityRegion::summary* unguarded = quality_.inStep();
         unguardedMin = unguarded ? unguarded->minQuality : 1;
     }
 
     // Guard
     if (moves)
     {
-        guard_->apply(d, step);
-        timer_->split(&part::guard);
+        guard_.apply(d, step);
+        timer_.split(&part::guard);
     }
 
     // End of step: the set's, the rule's, the control points written
     if (interpolant)
     {
-        step.nControl = controlPoints_->size();
-        controlPoints_->endStep();
+        step.nControl = controlPoints_.size();
+        controlPoints_.endStep();
         swapRule_->endStep(unguardedMin);
         if (mesh().time().writeTime())
         {
-            writer_->write(controlPoints_->set(), d);
+            writer_.write(controlPoints_.set(), d);
         }
     }
 
     // The conditions' last word; the measured points stay the new points
     // if it changed nothing (the step's mesh keeps its version)
-    prescribed_->finish();
-    cellDisplacement_->update();
-    timer_->split(&part::points);
+    prescribed_.finish();
+    cellDisplacement_.update();
+    timer_.split(&part::points);
     if (!inNewPoints_)
     {
         writeLog();
@@ -240,8 +216,8 @@ void Foam::dcpRBFMotionSolver::solve()
 Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::curPoints() const
 {
     tmp<pointField> tcurPoints(new pointField(points0().size()));
-    quality_->currentPoints(tcurPoints.ref());
-    frame_->place(tcurPoints.ref());
+    quality_.currentPoints(tcurPoints.ref());
+    frame_.place(tcurPoints.ref());
     return tcurPoints;
 }
 
@@ -261,25 +237,25 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
     // the points the quality was measured on, if the displacement is the
     // one they were made from, else made anew. The measured ones by
     // reference (OpenFOAM's callers copy them or read them at once)
-    const pointField& measuredPoints = quality_->lastPoints();
+    const pointField& measuredPoints = quality_.lastPoints();
     const bool measured =
-        quality_->measured() && measuredPoints.size() == points0().size();
+        quality_.measured() && measuredPoints.size() == points0().size();
     tmp<pointField> tpoints;
     if (!measured)
     {
         tpoints = curPoints();
     }
-    else if (frame_->places())
+    else if (frame_.places())
     {
         tpoints = tmp<pointField>(new pointField(measuredPoints));
-        frame_->place(tpoints.ref());
+        frame_.place(tpoints.ref());
     }
     else
     {
         tpoints = tmp<pointField>(measuredPoints);
     }
     nReusedPoints_ += measured;
-    timer_->split(&dcpRBFStepTimer::times::points);
+    timer_.split(&dcpRBFStepTimer::times::points);
     writeLog();
     return tpoints;
 }

@@ -61,7 +61,7 @@ void Foam::dcpRBFMotionSolver::checkSetSize() const
         return;
     }
     const dictionary& dict = coeffDict().subDict("controlPoints");
-    const label dim = context_->dim();
+    const label dim = context_.dim();
     const label fewest = settings().polynomial() ? dim + 1 : 1;
     if (sel.maxPoints < fewest)
     {
@@ -71,13 +71,13 @@ void Foam::dcpRBFMotionSolver::checkSetSize() const
             << dim << "D: take maxPoints " << fewest
             << " or more (or polynomial false)" << exit(FatalIOError);
     }
-    if (sel.minPoints > context_->boundaryPoints().size())
+    if (sel.minPoints > context_.boundaryPoints().size())
     {
         FatalIOErrorInFunction(dict)
             << "minPoints " << sel.minPoints << " is above the "
-            << context_->boundaryPoints().size() << " boundary points of movingPatches"
+            << context_.boundaryPoints().size() << " boundary points of movingPatches"
             << " and staticPatches (the candidate control points): take"
-            << " minPoints " << context_->boundaryPoints().size() << " or fewer"
+            << " minPoints " << context_.boundaryPoints().size() << " or fewer"
             << " (selection all takes every one)" << exit(FatalIOError);
     }
 }
@@ -135,7 +135,7 @@ void Foam::dcpRBFMotionSolver::setThreads() const
 
 void Foam::dcpRBFMotionSolver::checkRegion() const
 {
-    if (quality_->region().size() == 0)
+    if (quality_.region().size() == 0)
     {
         FatalIOErrorInFunction(coeffDict())
             << "supportRadius " << Foam::name(settings().kernel().radius()).c_str() << " reaches"

@@ -25,6 +25,14 @@ Foam::dcpRBFStepTimer::dcpRBFStepTimer
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::dcpRBFStepTimer::start()
+{
+    clock_.resetTime();
+    checkTime_ = quality_.checkTime();
+    times_ = times();
+}
+
+
 void Foam::dcpRBFStepTimer::split(scalar times::*part)
 {
     const scalar elapsed = clock_.timeIncrement();
