@@ -26,6 +26,7 @@ Description
 #include "polyMesh.H"
 #include "clockTime.H"
 #include "dcpRBFCellQuality.H"
+#include "cellByCellQuality.H"
 #include "dcpRBFQualityRegion.H"
 #include "SimdWidth.hpp"
 #include "dcpRBFPlaneProjection.H"
@@ -95,7 +96,6 @@ int main(int argc, char *argv[])
     );
     Info<< "cells " << region.cells().size() << ", points " << mesh.nPoints()
         << ", region set-up " << 1000*c.elapsedTime() << " ms" << nl;
-    const dcpRBFCellQuality cellQuality(mesh);
     mesh.cells();
     const bool reference = nRef > 0;
 
@@ -105,7 +105,7 @@ int main(int argc, char *argv[])
     {
         omp_set_num_threads(threads);
         const scalar tOld = reference
-          ? medianMs(nRef, [&]{ qOld = cellQuality.compute(region.cells(), p0, p); })
+          ? medianMs(nRef, [&]{ qOld = cellByCellQuality(mesh, region.cells(), p0, p); })
           : 0;
         const scalar tNew = medianMs(n, [&]{ (threads == 1 ? q1 : q2) = region.quality(p); });
         // what the guard calls: the scan, count, min, mean and the ranking

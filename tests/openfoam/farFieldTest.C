@@ -20,6 +20,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "cellByCellQuality.H"
 #include "testHelpers.H"
 #include "bumpRun.H"
 #include "dcpRBFCellQuality.H"
@@ -139,7 +140,7 @@ TEST(FarField, CellsOfTheBlendAreChecked)
     const pointField p(ms->newPoints());
     const scalarField q
     (
-        dcpRBFCellQuality(c.mesh()).compute(identity(c.mesh().nCells()), p0, p)
+        cellByCellQuality(c.mesh(), identity(c.mesh().nCells()), p0, p)
     );
     // the premise: cells of the blend in the box's middle are deformed
     scalar bandLeast = 1;

@@ -6,6 +6,7 @@ License
     GPL-3.0-or-later: see the LICENSE file at the top of the repository.
 \*---------------------------------------------------------------------------*/
 
+#include "cellByCellQuality.H"
 #include "testHelpers.H"
 #include "dcpRBFQualityRegion.H"
 #include "dcpRBFCellQuality.H"
@@ -79,7 +80,7 @@ TEST(QualityRegion, CheckCoversEveryCellWhosePointsMove)
             }
             const scalarField all
             (
-                dcpRBFCellQuality(mesh, metric).compute(identity(mesh.nCells()), p0, p)
+                cellByCellQuality(mesh, identity(mesh.nCells()), p0, p, metric)
             );
             label nInverted = 0;
             for (const scalar q : all) nInverted += (q <= 0);

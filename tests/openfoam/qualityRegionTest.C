@@ -9,6 +9,7 @@ License
 #include "testHelpers.H"
 #include "dcpRBFQualityRegion.H"
 #include "dcpRBFCellQuality.H"
+#include "cellByCellQuality.H"
 #include "dcpRBFPlaneProjection.H"
 #include "dcpRBFPlanarCells.H"
 
@@ -90,7 +91,7 @@ void compareScans(const label dim, const scalar radius)
         const scalarField q(region.quality(p));
         const scalarField ref
         (
-            dcpRBFCellQuality(mesh, metric).compute(region.cells(), p0, p)
+            cellByCellQuality(mesh, region.cells(), p0, p, metric)
         );
         ASSERT_EQ(q.size(), ref.size());
         label nInverted = 0;
@@ -241,7 +242,7 @@ TEST(QualityRegion, MixedPolygonAndDecomposedCellsEqualCellQuality2D)
     }
     const dcpRBFCellQuality quality(mesh, cells, p0, dcprbf::TetQuality::Metric::sizeShape);
     const scalarField q(quality.compute(p));
-    const scalarField ref(quality.compute(cells, p0, p));
+    const scalarField ref(cellByCellQuality(mesh, cells, p0, p, dcprbf::TetQuality::Metric::sizeShape));
     ASSERT_EQ(q.size(), ref.size());
     forAll(q, i)
     {

@@ -73,7 +73,6 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
     (
         mesh, *this, coeffDict(), pointDisplacement_, points0(), debug
     ),
-    timer_(quality_),
     inNewPoints_(false),
     nReusedPoints_(0),
     coeffsAtStart_(coeffDict())
@@ -95,7 +94,6 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
     (
         mesh, *this, coeffDict(), pointDisplacement_, this->points0(), debug
     ),
-    timer_(quality_),
     inNewPoints_(false),
     nReusedPoints_(0),
     coeffsAtStart_(coeffDict())
@@ -108,7 +106,7 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
 
 void Foam::dcpRBFMotionSolver::writeLog()
 {
-    log_.write(step_, quality_.inStep(), timer_.elapsed());
+    log_.write(step_, quality_.inStep());
 }
 
 
@@ -116,15 +114,15 @@ void Foam::dcpRBFMotionSolver::writeLog()
 
 void Foam::dcpRBFMotionSolver::solve()
 {
-    typedef dcpRBFStepTimer::times part;
+    typedef dcpRBFStepLog::times part;
     step_ = dcpRBFStepState();
     dcpRBFStepState& step = step_;
     quality_.startStep();
-    timer_.start();
+    log_.start();
 
     // Swap before the solve (swapRule nearest: from the mesh as it is)
     swapRule_->beforeSolve(step);
-    timer_.split(&part::swap);
+    log_.split(&part::swap);
 
     // Prescribe: the step's boundary displacement (one evaluation of the
     // conditions); the bodies' rigid motions blended, the RBF interpolates
@@ -146,11 +144,11 @@ void Foam::dcpRBFMotionSolver::solve()
         controlPoints_.solve(d);
         step.nAdded += controlPoints_.reselect(d, step.atMaxPoints);
     }
-    timer_.split(&part::select);
+    log_.split(&part::select);
 
     // Interpolate and correct (the boundary snapped, the constraints)
     step.boundaryError = interpolation_.interpolate(d);
-    timer_.split(&part::interpolate);
+    log_.split(&part::interpolate);
     if (debug && interpolant)
     {
         memory_.report
@@ -177,7 +175,7 @@ void Foam::dcpRBFMotionSolver::solve()
     if (interpolant)
     {
         swapRule_->afterInterpolate(d, step, measured);
-        timer_.split(&part::swap);
+        log_.split(&part::swap);
         const dcpRBFQualityRegion::summary* unguarded = quality_.inStep();
         unguardedMin = unguarded ? unguarded->minQuality : 1;
     }
@@ -186,7 +184,7 @@ void Foam::dcpRBFMotionSolver::solve()
     if (moves)
     {
         guard_.apply(d, step);
-        timer_.split(&part::guard);
+        log_.split(&part::guard);
     }
 
     // End of step: the set's, the rule's, the control points written
@@ -205,7 +203,7 @@ void Foam::dcpRBFMotionSolver::solve()
     // if it changed nothing (the step's mesh keeps its version)
     prescribed_.finish();
     cellDisplacement_.update();
-    timer_.split(&part::points);
+    log_.split(&part::points);
     if (!inNewPoints_)
     {
         writeLog();
@@ -255,7 +253,7 @@ Foam::tmp<Foam::pointField> Foam::dcpRBFMotionSolver::newPoints()
         tpoints = tmp<pointField>(measuredPoints);
     }
     nReusedPoints_ += measured;
-    timer_.split(&dcpRBFStepTimer::times::points);
+    log_.split(&dcpRBFStepLog::times::points);
     writeLog();
     return tpoints;
 }

@@ -25,7 +25,7 @@ Foam::dcpRBFStages::dcpRBFStages
     controlPoints_(context_),
     rotation_(context_),
     quality_(context_, rotation_.active()),
-    log_(context_.time()),
+    log_(context_.time(), quality_),
     writer_(context_.time(), context_.projection(), context_.boundaryPoints()),
     prescribed_(context_),
     interpolation_(context_, controlPoints_, rotation_, prescribed_),

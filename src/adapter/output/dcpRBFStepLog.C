@@ -18,9 +18,17 @@ License
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::dcpRBFStepLog::dcpRBFStepLog(const Time& runTime)
+Foam::dcpRBFStepLog::dcpRBFStepLog
+(
+    const Time& runTime,
+    const dcpRBFQualityMeasurement& quality
+)
 :
-    time_(runTime)
+    time_(runTime),
+    quality_(quality),
+    clock_(),
+    checkTime_(quality.checkTime()),
+    times_()
 {}
 
 
@@ -54,13 +62,31 @@ std::string ms(const double seconds)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::dcpRBFStepLog::start()
+{
+    clock_.resetTime();
+    checkTime_ = quality_.checkTime();
+    times_ = times();
+}
+
+
+void Foam::dcpRBFStepLog::split(scalar times::*part)
+{
+    const scalar elapsed = clock_.timeIncrement();
+    const scalar checks = quality_.checkTime() - checkTime_;
+    checkTime_ += checks;
+    times_.*part += elapsed - checks;
+    times_.measure += checks;
+}
+
+
 void Foam::dcpRBFStepLog::write
 (
     const dcpRBFStepState& r,
-    const dcpRBFQualityRegion::summary* quality,
-    const dcpRBFStepTimer::times& t
+    const dcpRBFQualityRegion::summary* quality
 )
 {
+    const times& t = times_;
     // the figures of no cell checked if the step measured none
     const dcpRBFQualityRegion::summary none;
     const dcpRBFQualityRegion::summary& q = quality ? *quality : none;

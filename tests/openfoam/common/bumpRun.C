@@ -8,6 +8,7 @@ License
 
 #include "bumpRun.H"
 #include "dcpRBFCellQuality.H"
+#include "cellByCellQuality.H"
 
 #include <gtest/gtest.h>
 #include <fstream>
@@ -72,7 +73,7 @@ bumpRun runBump(const std::string& controlPoints, label nSteps, label n,
         // the logged minimum is the written mesh's (its worst cells are at
         // the moving wall, in reach), after trials made before or after the
         // measurement, rescues and blends alike
-        b.minQuality.push_back(gMin(dcpRBFCellQuality(c.mesh()).compute(cells, p0, p)));
+        b.minQuality.push_back(gMin(cellByCellQuality(c.mesh(), cells, p0, p)));
         c.mesh().movePoints(p);
         b.points.push_back(p);
     }

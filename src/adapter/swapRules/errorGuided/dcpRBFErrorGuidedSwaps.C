@@ -40,8 +40,7 @@ Foam::dcpRBFErrorGuidedSwaps::dcpRBFErrorGuidedSwaps
         dcpRBFSelectionSettings::maxTrialWait,
         context.settings().selection().trialQualityDrop
     ),
-    windowInterpolation_(context, interpolation),
-    pointCount_(context.mesh())
+    windowInterpolation_(context, interpolation)
 {
     controlPoints_.blendWith(blend_);
     controlPoints_.state().add

@@ -82,7 +82,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     const label kept = endTrials(d, !ts.rescue);
     if (mesh.windowed())
     {
-        step.trialPoints = pointCount_.count(mesh.window().points());
+        step.trialPoints = mesh.window().nGlobalPoints();
     }
     if (kept || blend.from)
     {

@@ -9,6 +9,7 @@ License
 #include "dcpRBFTrialWindow.H"
 #include "SmallestValues.hpp"
 #include "dcpRBFVersion.H"
+#include "syncTools.H"
 
 #include <algorithm>
 #include <iterator>
@@ -160,6 +161,34 @@ Foam::dcpRBFTrialWindow::dcpRBFTrialWindow
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::dcpRBFTrialWindow::nGlobalPoints() const
+{
+    if (!Pstream::parRun())
+    {
+        return points_.size();
+    }
+    // a point in any processor's list, counted by its master
+    // (labels: OpenFOAM's exchange of bools trips GCC's allocation-size
+    // warning, an error in CI)
+    const bitSet masterPoints(syncTools::getMasterPoints(mesh_));
+    labelList in(mesh_.nPoints(), 0);
+    for (const label pointi : points_)
+    {
+        in[pointi] = 1;
+    }
+    syncTools::syncPointList(mesh_, in, maxEqOp<label>(), label(0));
+    label n = 0;
+    forAll(in, pointi)
+    {
+        if (in[pointi] && masterPoints.test(pointi))
+        {
+            ++n;
+        }
+    }
+    return returnReduce(n, sumOp<label>());
+}
+
 
 Foam::label Foam::dcpRBFTrialWindow::size() const
 {
