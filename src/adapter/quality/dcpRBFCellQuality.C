@@ -8,6 +8,7 @@ License
 
 #include "dcpRBFCellQuality.H"
 #include "dcpRBFPlanarCells.H"
+#include "MortonOrder.hpp"
 #include "TetQuality.hpp"
 
 namespace
@@ -231,6 +232,48 @@ Foam::label Foam::dcpRBFCellQuality::computeLowest
     }
     q.setSize(nCells_);
     return label(scan_->measureLowest(xyz(p), q.data(), std::size_t(max(k, label(1)))));
+}
+
+
+Foam::labelList Foam::dcpRBFCellQuality::scanOrder
+(
+    const polyMesh& mesh,
+    const pointField& points0,
+    const std::vector<label>& cells
+)
+{
+    std::vector<double> key;
+    key.reserve(3*cells.size());
+    for (const label celli : cells)
+    {
+        const point& x = points0[mesh.faces()[mesh.cells()[celli][0]][0]];
+        key.insert(key.end(), {x.x(), x.y(), x.z()});
+    }
+    const std::vector<int> order(dcprbf::mortonOrder(key.data(), cells.size()));
+    labelList ordered(label(cells.size()));
+    forAll(ordered, i)
+    {
+        ordered[i] = cells[order[i]];
+    }
+    return ordered;
+}
+
+
+Foam::FixedList<Foam::scalar, 3> Foam::dcpRBFCellQuality::referenceCentre
+(
+    const labelListList& cellPoints,
+    const dcpRBFPlaneProjection& projection,
+    const pointField& points0,
+    const label celli
+)
+{
+    const labelList& cp = cellPoints[celli];
+    vector c(Zero);
+    for (const label pi : cp) c += points0[pi];
+    c /= cp.size();
+    FixedList<scalar, 3> x;
+    projection.toCore(c, x.data());
+    return x;
 }
 
 

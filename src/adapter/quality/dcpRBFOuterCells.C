@@ -7,7 +7,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFOuterCells.H"
-#include "dcpRBFScanOrder.H"
 #include "PointTree.hpp"
 
 #include <memory>
@@ -78,7 +77,7 @@ Foam::dcpRBFOuterCells::dcpRBFOuterCells
             ++nAffine_;
         }
     }
-    cells_ = dcpRBFScanOrder::of(mesh, points0, outer);
+    cells_ = dcpRBFCellQuality::scanOrder(mesh, points0, outer);
     if (nAffine_ > 0)
     {
         // last: the cell that stands for the nAffine_ moved affinely
@@ -88,7 +87,7 @@ Foam::dcpRBFOuterCells::dcpRBFOuterCells
     forAll(cells_, i)
     {
         centres_[i] =
-            dcpRBFScanOrder::centre(cellPoints, projection, points0, cells_[i]);
+            dcpRBFCellQuality::referenceCentre(cellPoints, projection, points0, cells_[i]);
     }
     quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
 }

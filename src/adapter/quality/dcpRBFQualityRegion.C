@@ -7,7 +7,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFQualityRegion.H"
-#include "dcpRBFScanOrder.H"
 #include "PointTree.hpp"
 #include "Pstream.H"
 #include "emptyPolyPatch.H"
@@ -123,7 +122,7 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
                 (!region || region->cell(celli))
              && tree.anyWithin
                 (
-                    dcpRBFScanOrder::centre(cellPoints, projection, points0, celli).data(), radius
+                    dcpRBFCellQuality::referenceCentre(cellPoints, projection, points0, celli).data(), radius
                 );
         }
     }
@@ -132,11 +131,11 @@ Foam::dcpRBFQualityRegion::dcpRBFQualityRegion
     {
         if (inside[celli]) found.push_back(celli);
     }
-    cells_ = dcpRBFScanOrder::of(mesh, points0, found);
+    cells_ = dcpRBFCellQuality::scanOrder(mesh, points0, found);
     centres_.setSize(cells_.size());
     forAll(cells_, i)
     {
-        centres_[i] = dcpRBFScanOrder::centre(cellPoints, projection, points0, cells_[i]);
+        centres_[i] = dcpRBFCellQuality::referenceCentre(cellPoints, projection, points0, cells_[i]);
     }
     quality_.reset(new dcpRBFCellQuality(mesh, cells_, points0, metric));
 
