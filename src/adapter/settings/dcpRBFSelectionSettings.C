@@ -87,7 +87,8 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
         reselectTolerance =
             r.getScalar(k, max(min(10*tolerance, 1.0), tolerance), tolerance);
     }
-    // the rule's own keywords, read by its settings; nSwap's default its
+    // the swap rule's own keywords, read by its settings (in selection all
+    // and greedy too: the default rule's give nSwap's default there)
     swapRule_.reset(dcpRBFSwapRuleSettings::New(dict).ptr());
     nSwap = r.getLabel(key("nSwap"), swapRule_->nSwapDefault());
     protectSteps = r.getLabel(key("protectSteps"));
