@@ -8,7 +8,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bumpRun.H"
-#include "dcpRBFSelectionSettings.H"
+#include "dcpRBFErrorGuidedSettings.H"
 
 #include <gtest/gtest.h>
 #include <cmath>
@@ -76,7 +76,7 @@ struct trialSchedule
             {
                 ++nUndoneSteps;
                 wait = next;
-                next = std::min<label>(2*next, label(dcpRBFSelectionSettings::maxTrialWait));
+                next = std::min<label>(2*next, dcpRBFErrorGuidedSettings::maxTrialWait());
                 trialQuality = row[cMinQ];
             }
             if (wait > 0) --wait;
@@ -138,7 +138,7 @@ TEST_P(ErrorGuidedSwaps, NeverWorseThanTheStaticSetAtFixedN)
     EXPECT_GT(keptLater, 0) << "no swap kept after the first step";
     // (except where a wait ended because the mesh got worse: the mesh
     // without swaps was measured first, to see that)
-    const dcpRBFSelectionSettings defaults;
+    const dcpRBFErrorGuidedSettings defaults(dictionary::null);
     const trialSchedule t(rows, defaults.trialBackoff, defaults.trialQualityDrop);
     EXPECT_LE(run.nMeasurements, nSteps + 1 + t.nEarlyKept)
         << keptLater << " steps after the first kept swaps";

@@ -10,7 +10,10 @@ Description
     docs/keywords.md has a row for every keyword of the table, in the
     section of its dictionary, whose type, default and allowed values are
     the table's; and no row of those sections that the table does not have.
-    Needs DCPRBF_DIR (the repository; Alltest sets it).
+    The keyword tables of the adapter's headers (\table in their Usage)
+    have a row for every keyword of their dictionary and none else, whose
+    description is the table's help and whose default (and required) is
+    the table's. Needs DCPRBF_DIR (the repository; Alltest sets it).
 
 \*---------------------------------------------------------------------------*/
 
@@ -18,6 +21,7 @@ Description
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -95,6 +99,80 @@ std::map<std::string, std::map<std::string, std::vector<std::string>>> docRows()
     return rows;
 }
 
+//- A text without its backticks (a header's table is not markdown)
+std::string plain(std::string s)
+{
+    s.erase(std::remove(s.begin(), s.end(), '`'), s.end());
+    return s;
+}
+
+//- A header's keyword table: its rows, each its cells by column name
+//  (trimmed; the first line names the columns)
+std::vector<std::map<std::string, std::string>> headerTable
+(
+    const std::string& header
+)
+{
+    std::vector<std::map<std::string, std::string>> rows;
+    const char* dir = std::getenv("DCPRBF_DIR");
+    std::ifstream is(std::string(dir ? dir : ".") + "/" + header);
+    std::string line;
+    std::vector<std::string> columns;
+    bool inTable = false;
+    while (std::getline(is, line))
+    {
+        const auto a = line.find_first_not_of(' ');
+        const std::string text(a == std::string::npos ? "" : line.substr(a));
+        if (text == "\\table" || text == "\\endtable")
+        {
+            inTable = text == "\\table";
+            columns.clear();
+            continue;
+        }
+        if (!inTable || text.empty())
+        {
+            continue;
+        }
+        const std::vector<std::string> c(cells("|" + text + "|"));
+        if (columns.empty())
+        {
+            columns = c;
+            continue;
+        }
+        std::map<std::string, std::string> row;
+        for (std::size_t i = 0; i < columns.size(); ++i)
+        {
+            row[columns[i]] = i < c.size() ? c[i] : "";
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+//- A header's row: its cells, an empty last one as a bare bar
+std::string headerRow(const std::vector<std::string>& cells)
+{
+    std::string row;
+    for (const std::string& c : cells)
+    {
+        row += (row.empty() ? "" : " | ") + c;
+    }
+    return cells.back().empty() ? row.substr(0, row.size() - 1) : row;
+}
+
+//- A header's row of keyword k as the table says it
+std::string headerRow(const dcpRBFKeyword& k, const bool required)
+{
+    const std::string deflt(plain(k.defaultValueText()));
+    std::vector<std::string> c{k.name, plain(k.help)};
+    if (required)
+    {
+        c.push_back(deflt == "required" ? "yes" : "no");
+    }
+    c.push_back(deflt == "required" ? "" : deflt);
+    return headerRow(c);
+}
+
 } // End anonymous namespace
 
 
@@ -165,6 +243,73 @@ TEST(Keywords, ChoicesAndBoundsAreConsistent)
             {
                 EXPECT_TRUE(k.within(k.deflt)) << "default " << k.deflt;
             }
+        }
+    }
+}
+
+
+TEST(Keywords, HeaderTablesAsTheTableSays)
+{
+    ASSERT_TRUE(std::getenv("DCPRBF_DIR")) << "DCPRBF_DIR unset";
+    const std::map<std::string, std::string> headers
+    {
+        {"src/adapter/settings/dcpRBFSettings.H", "dcpRBFCoeffs"},
+        {"src/adapter/settings/dcpRBFSelectionSettings.H", "controlPoints"},
+        {"src/adapter/rotation/dcpRBFRotation.H", "rotation"}
+    };
+    for (const auto& h : headers)
+    {
+        SCOPED_TRACE(h.first);
+        const auto rows = headerTable(h.first);
+        ASSERT_FALSE(rows.empty()) << "no \\table in " << h.first;
+        const bool required = rows[0].count("Required");
+        std::map<std::string, std::string> documented;
+        for (const auto& row : rows)
+        {
+            const auto at = [&](const char* column)
+            {
+                const auto c = row.find(column);
+                return c == row.end() ? std::string() : c->second;
+            };
+            std::vector<std::string> c{at("Property"), at("Description")};
+            if (required)
+            {
+                c.push_back(at("Required"));
+            }
+            c.push_back(at("Default"));
+            documented[at("Property")] = headerRow(c);
+        }
+        std::string expected;
+        for (const dcpRBFKeyword& k : dcpRBFKeywords::all())
+        {
+            if (h.second == k.dictionary)
+            {
+                expected += "        " + headerRow(k, required) + "\n";
+            }
+        }
+        std::string differ;
+        for (const dcpRBFKeyword& k : dcpRBFKeywords::all())
+        {
+            const auto row = documented.find(k.name);
+            if
+            (
+                h.second == k.dictionary
+             && (row == documented.end() || row->second != headerRow(k, required))
+            )
+            {
+                differ += (differ.empty() ? "" : " ") + std::string(k.name);
+            }
+        }
+        EXPECT_EQ(differ, "")
+            << h.first << ": the rows of " << differ.c_str() << " are not"
+            << " the table's; its rows should be (dcpRBFKeywords):" << nl
+            << expected.c_str();
+        const wordList known(dcpRBFKeywords::names(h.second));
+        for (const auto& row : documented)
+        {
+            EXPECT_TRUE(known.found(row.first))
+                << h.first << ": " << row.first << " is in the header's table"
+                << " but not a keyword of " << h.second.c_str();
         }
     }
 }

@@ -23,6 +23,12 @@ Foam::dcpRBFRotation::blendProfileNames
     {blendProfile::log, "log"}
 });
 
+//- The choices of blendProfile: the Enum's names
+static const Foam::dcpRBFKeyword::choicesFrom blendProfileChoices
+(
+    "rotation", "blendProfile", Foam::dcpRBFRotation::blendProfileNames
+);
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 

@@ -95,23 +95,63 @@ void Foam::dcpRBFDictReader::checkKeywordsOf(const word& dictionaryName) const
 }
 
 
-void Foam::dcpRBFDictReader::checkChoices
+void Foam::dcpRBFDictReader::checkScope
 (
-    const dcpRBFKeyword& k,
-    const wordList& words
-)
+    const word& dictionaryName,
+    const wordList& selections,
+    const dcpRBFKeyword::scope selected,
+    const word& rule,
+    const bool ruleActs
+) const
 {
-    const wordList choices(k.choiceList());
-    bool same = words.size() == choices.size();
-    for (const word& w : words)
+    const auto given = [&](const dcpRBFKeyword& k)
     {
-        same = same && choices.found(w);
+        return dictionaryName == k.dictionary && dict_.found(k.name);
+    };
+    for (const dcpRBFKeyword& k : dcpRBFKeywords::all())
+    {
+        // a swap rule's own keywords
+        if (!k.rule || !given(k))
+        {
+            continue;
+        }
+        if (rule != k.rule)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Keyword " << k.name << " has no effect with swapRule "
+                << rule << ". It belongs to swapRule " << k.rule
+                << exit(FatalIOError);
+        }
+        if (!ruleActs)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Keyword " << k.name << " has no effect with nSwap 0 (no"
+                << " trial swaps). It needs nSwap >= 1" << exit(FatalIOError);
+        }
     }
-    if (!same)
+    for (const dcpRBFKeyword& k : dcpRBFKeywords::all())
     {
-        FatalErrorInFunction
-            << "Keyword " << k.name << ": the table's choices " << choices
-            << " are not the reader's " << words << abort(FatalError);
+        if (!given(k) || k.allowedWith <= selected)
+        {
+            continue;
+        }
+        const label s = label(k.allowedWith);
+        if (selected == dcpRBFKeyword::scope::always)
+        {
+            string allowed;
+            for (label i = s; i < selections.size(); ++i)
+            {
+                allowed += (i > s ? ", " : "") + selections[i];
+            }
+            FatalIOErrorInFunction(dict_)
+                << "Keyword " << k.name << " has no effect with selection "
+                << selections[label(selected)] << ". Allowed selections"
+                << " using it: " << allowed.c_str() << exit(FatalIOError);
+        }
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << k.name << " has no effect with selection "
+            << selections[label(selected)] << ". It belongs to selection "
+            << selections[s] << exit(FatalIOError);
     }
 }
 
@@ -391,7 +431,8 @@ Foam::scalar Foam::dcpRBFDictReader::getLength
 (
     const dcpRBFKeyword& k,
     const word& unitWord,
-    const std::function<scalar()>& unit
+    const std::function<scalar()>& unit,
+    const scalar size
 ) const
 {
     const word keyword(k.name);
@@ -411,19 +452,50 @@ Foam::scalar Foam::dcpRBFDictReader::getLength
             << exit(FatalIOError);
     }
     const scalar factor(readScalar(is));
-    if (is.eof())
+    scalar length = factor;
+    if (!is.eof())
     {
-        return factor;
+        const token t(is);
+        if (!t.isWord() || t.wordToken() != unitWord)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Keyword " << keyword << ": a length [m] or \"factor "
+                << unitWord << "\"; got " << t << " after " << factor
+                << ". Allowed unit word: " << unitWord << exit(FatalIOError);
+        }
+        length = factor*unit();
     }
-    const token t(is);
-    if (!t.isWord() || t.wordToken() != unitWord)
+    checkLength(k, length, size);
+    return length;
+}
+
+
+void Foam::dcpRBFDictReader::checkLength
+(
+    const dcpRBFKeyword& k,
+    const scalar length,
+    const scalar size
+) const
+{
+    if (!(length > 0))
     {
         FatalIOErrorInFunction(dict_)
-            << "Keyword " << keyword << ": a length [m] or \"factor "
-            << unitWord << "\"; got " << t << " after " << factor
-            << ". Allowed unit word: " << unitWord << exit(FatalIOError);
+            << "Keyword " << k.name << " must be > 0 [m], got " << length
+            << exit(FatalIOError);
     }
-    return factor*unit();
+    // Far outside the mesh's size a length is no length for it (and its
+    // square overflows in the searches)
+    if (!(length >= k.lo*size && length <= k.hi*size))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword " << k.name << " " << Foam::name(length).c_str()
+            << " is no length for this mesh (its bounding box's diagonal: "
+            << Foam::name(size).c_str() << "): allowed "
+            << Foam::name(k.lo*size).c_str() << " to "
+            << Foam::name(k.hi*size).c_str() << " [m]"
+            << (k.advice ? ", in practice " : "")
+            << (k.advice ? k.advice : "") << exit(FatalIOError);
+    }
 }
 
 

@@ -9,9 +9,12 @@ License
 #include "dcpRBFKeyword.H"
 #include "IStringStream.H"
 #include "DynamicList.H"
+#include "error.H"
 
 #include <cmath>
+#include <map>
 #include <sstream>
+#include <string>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -36,6 +39,38 @@ Foam::string number(const double x)
     return os.str();
 }
 
+//- A factor as the reference writes it: 1e-9, 1e9 (no exponent's sign or
+//  leading zeros)
+Foam::string factor(const double x)
+{
+    std::ostringstream os;
+    os << x;
+    std::string s(os.str());
+    const std::size_t e = s.find('e');
+    if (e != std::string::npos)
+    {
+        const bool negative = s[e + 1] == '-';
+        std::size_t digits = e + 2;
+        while (digits + 1 < s.size() && s[digits] == '0') ++digits;
+        s = s.substr(0, e + 1) + (negative ? "-" : "") + s.substr(digits);
+    }
+    return s;
+}
+
+//- The words registered for choices without words in the table, by
+//  dictionary and keyword (made at its first use: the registrations are
+//  static data of other files)
+std::map<std::string, std::function<Foam::wordList()>>& registered()
+{
+    static std::map<std::string, std::function<Foam::wordList()>> r;
+    return r;
+}
+
+std::string registryKey(const char* dictionary, const char* name)
+{
+    return std::string(dictionary) + '/' + name;
+}
+
 Foam::string code(const Foam::string& s)
 {
     return "`" + s + "`";
@@ -55,8 +90,18 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::choice
     return
     {
         dictionary, name, valueType::choice, 0, deflt, choices, 0, 0, true,
-        true, help, scope::always, nullptr, nullptr, nullptr
+        true, help, scope::always, nullptr, nullptr, nullptr, nullptr
     };
+}
+
+
+Foam::dcpRBFKeyword Foam::dcpRBFKeyword::choice
+(
+    const char* dictionary, const char* name, const char* deflt,
+    const char* help
+)
+{
+    return choice(dictionary, name, deflt, nullptr, help);
 }
 
 
@@ -69,7 +114,8 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::onOff
     return
     {
         dictionary, name, valueType::switchValue, double(deflt), nullptr,
-        nullptr, 0, 1, true, true, help, scope::always, nullptr, nullptr, nullptr
+        nullptr, 0, 1, true, true, help, scope::always, nullptr, nullptr, nullptr,
+        nullptr
     };
 }
 
@@ -84,7 +130,8 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::real
     return
     {
         dictionary, name, valueType::real, deflt, nullptr, nullptr, lo, hi,
-        lowIncluded, highIncluded, help, scope::always, nullptr, nullptr, nullptr
+        lowIncluded, highIncluded, help, scope::always, nullptr, nullptr,
+        nullptr, nullptr
     };
 }
 
@@ -98,7 +145,23 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::integer
     return
     {
         dictionary, name, valueType::integer, deflt, nullptr, nullptr, lo, hi,
-        true, true, help, scope::always, nullptr, nullptr, nullptr
+        true, true, help, scope::always, nullptr, nullptr, nullptr, nullptr
+    };
+}
+
+
+Foam::dcpRBFKeyword Foam::dcpRBFKeyword::length
+(
+    const char* dictionary, const char* name, const double lo,
+    const double hi, const char* condition, const char* advice,
+    const char* help
+)
+{
+    return
+    {
+        dictionary, name, valueType::length, 0, nullptr, nullptr, lo, hi,
+        true, true, help, scope::always, "required", condition, nullptr,
+        advice
     };
 }
 
@@ -112,8 +175,19 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::other
     return
     {
         dictionary, name, type, 0, nullptr, nullptr, 0, 0, true, true, help,
-        scope::always, defaultText, condition, nullptr
+        scope::always, defaultText, condition, nullptr, nullptr
     };
+}
+
+
+Foam::dcpRBFKeyword::choicesFrom::choicesFrom
+(
+    const char* dictionary,
+    const char* name,
+    const std::function<wordList()>& words
+)
+{
+    registered()[registryKey(dictionary, name)] = words;
 }
 
 
@@ -153,7 +227,19 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::alsoNeeds(const char* text) const
 
 Foam::wordList Foam::dcpRBFKeyword::choiceList() const
 {
-    IStringStream is(choices ? choices : "");
+    if (!choices)
+    {
+        const auto words = registered().find(registryKey(dictionary, name));
+        if (words == registered().end())
+        {
+            FatalErrorInFunction
+                << "Keyword " << name << " of " << dictionary << ": no words"
+                << " registered for its choices (dcpRBFKeyword::choicesFrom)"
+                << abort(FatalError);
+        }
+        return words->second();
+    }
+    IStringStream is(choices);
     DynamicList<word> words;
     while (is.good())
     {
@@ -239,6 +325,11 @@ Foam::string Foam::dcpRBFKeyword::allowedText() const
         }
         case valueType::switchValue:
             text = "`true`, `false`";
+            break;
+        case valueType::length:
+            text =
+                "> 0, from " + factor(lo) + " to " + factor(hi)
+              + " times the mesh's bounding-box diagonal";
             break;
         case valueType::real:
         case valueType::integer:

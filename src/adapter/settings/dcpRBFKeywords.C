@@ -8,7 +8,6 @@ License
 
 #include "dcpRBFKeywords.H"
 #include "error.H"
-#include "dcpRBFSelectionSettings.H"
 #include "DynamicList.H"
 
 #include <vector>
@@ -19,7 +18,6 @@ namespace
 {
 
 using K = Foam::dcpRBFKeyword;
-using Foam::dcpRBFSelectionSettings;
 using type = K::valueType;
 using scope = K::scope;
 
@@ -32,10 +30,10 @@ const char* const rot = "rotation";
 const char* const body = "bodies";
 const char* const fvMesh = "dcpRBFFvMeshCoeffs";
 
-const char* const metrics = "sizeShape size shape";
-
 //- The table, in the reference's order (docs/keywords.md); made at its
-//  first use (static data of other files may read it)
+//  first use (static data of other files may read it). A choice read into
+//  an enumeration has no words here: those of the Enum, registered beside
+//  it (dcpRBFKeyword::choicesFrom), are its allowed words
 const std::vector<K>& table()
 {
     static const std::vector<K> t
@@ -60,18 +58,16 @@ const std::vector<K>& table()
         "an existing cellZone; the same as the motion solver dictionary's if that names one",
         "the region moved and checked; points outside it stay where they are"
     ),
-    K::other
+    K::length
     (
-        coeffs, "supportRadius", type::length, "required",
-        "> 0, from 1e-9 to 1e9 times the mesh's bounding-box diagonal, and"
-        " reaching at least one cell centre from the moving patches",
+        coeffs, "supportRadius", 1e-9, 1e9,
+        "reaching at least one cell centre from the moving patches",
+        "several times the largest displacement",
         "the kernel's radius (a global function's length scale)"
     ),
     K::choice
     (
-        coeffs, "function", "WendlandC2",
-        "WendlandC0 WendlandC2 WendlandC4 WendlandC6 TPS Gaussian IMQ",
-        "the radial basis function"
+        coeffs, "function", "WendlandC2", "the radial basis function"
     ),
     K::onOff
     (
@@ -86,7 +82,7 @@ const std::vector<K>& table()
     ),
     K::choice
     (
-        coeffs, "qualityMetric", "sizeShape", metrics,
+        coeffs, "qualityMetric", "sizeShape",
         "the cell quality measured, logged and guarded"
     ),
     K::choice
@@ -101,7 +97,7 @@ const std::vector<K>& table()
     ).defaultIs("`0` (act on inverted cells)"),
     K::choice
     (
-        coeffs, "qualityFloorAction", "warn", "warn stop",
+        coeffs, "qualityFloorAction", "warn",
         "when the floor is not met after guardIterations: warn or stop"
     ),
     K::integer
@@ -157,7 +153,7 @@ const std::vector<K>& table()
     // controlPoints
     K::choice
     (
-        cp, "selection", "all", "all greedy dynamic",
+        cp, "selection", "all",
         "all boundary points, a greedy set, or a greedy set with swaps"
     ),
     K::real
@@ -186,7 +182,7 @@ const std::vector<K>& table()
     ).only(scope::reduced),
     K::choice
     (
-        cp, "selectOn", "displacement", "displacement unit",
+        cp, "selectOn", "displacement",
         "select on the first displacement, or on a unit one"
     ).only(scope::reduced),
     K::real
@@ -198,7 +194,7 @@ const std::vector<K>& table()
      .alsoNeeds("at least `tolerance`"),
     K::choice
     (
-        cp, "swapRule", "errorGuided", "errorGuided nearest",
+        cp, "swapRule", "errorGuided",
         "trial swaps kept if they help, or the paper's rule"
     ).only(scope::dynamic),
     K::integer
@@ -212,12 +208,13 @@ const std::vector<K>& table()
     ).ofRule("errorGuided"),
     K::choice
     (
-        cp, "trialPoints", "window", "window all",
+        cp, "trialPoints", "window",
         "where a trial's mesh is made"
     ).ofRule("errorGuided"),
+    // (its upper bound: errorGuided's longest wait between trials)
     K::integer
     (
-        cp, "trialBackoff", 4, 1, dcpRBFSelectionSettings::maxTrialWait,
+        cp, "trialBackoff", 4, 1, 16,
         "steps the next trial waits after an undone one"
     ).ofRule("errorGuided"),
     K::real
@@ -256,7 +253,7 @@ const std::vector<K>& table()
     ),
     K::choice
     (
-        rot, "blendProfile", "star", "star log",
+        rot, "blendProfile", "star",
         "the blend's shape: the walls' room, or the radial ring"
     ),
     K::real
@@ -293,7 +290,7 @@ const std::vector<K>& table()
     // dcpRBFFvMeshCoeffs
     K::choice
     (
-        fvMesh, "qualityMetric", "sizeShape", metrics,
+        fvMesh, "qualityMetric", "sizeShape",
         "the metric of the cellQuality field"
     )
     };

@@ -27,19 +27,37 @@ Foam::dcpRBFSelectionSettings::targetNames
     {target::unit, "unit"}
 });
 
-const Foam::Enum<Foam::dcpRBFSelectionSettings::trialPoints>
-Foam::dcpRBFSelectionSettings::trialPointsNames
-({
-    {trialPoints::window, "window"},
-    {trialPoints::all, "all"}
-});
-
 namespace
 {
     //- A keyword of controlPoints
     const Foam::dcpRBFKeyword& key(const char* name)
     {
         return Foam::dcpRBFKeywords::get("controlPoints", name);
+    }
+
+    //- The choices of selection and selectOn: the Enums' names
+    const Foam::dcpRBFKeyword::choicesFrom modeChoices
+    (
+        "controlPoints", "selection",
+        Foam::dcpRBFSelectionSettings::modeNames
+    );
+    const Foam::dcpRBFKeyword::choicesFrom targetChoices
+    (
+        "controlPoints", "selectOn",
+        Foam::dcpRBFSelectionSettings::targetNames
+    );
+
+    //- The scope of the keywords a selection allows
+    Foam::dcpRBFKeyword::scope scopeOf
+    (
+        const Foam::dcpRBFSelectionSettings::mode m
+    )
+    {
+        using mode = Foam::dcpRBFSelectionSettings::mode;
+        using scope = Foam::dcpRBFKeyword::scope;
+        return
+            m == mode::all ? scope::always
+          : m == mode::greedy ? scope::reduced : scope::dynamic;
     }
 }
 
@@ -50,13 +68,6 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
 {
     const dcpRBFDictReader r(dict);
     r.checkKeywordsOf("controlPoints");
-    using scope = dcpRBFKeyword::scope;
-    const wordList keywords(dcpRBFKeywords::names("controlPoints"));
-    const wordList dynamicKeywords
-    (
-        dcpRBFKeywords::namesOnly("controlPoints", scope::dynamic)
-    );
-
     selection = r.getEnum(key("selection"), modeNames);
     tolerance = r.getScalar(key("tolerance"));
     minPoints = r.getLabel(key("minPoints"));
@@ -76,67 +87,16 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
         reselectTolerance =
             r.getScalar(k, max(min(10*tolerance, 1.0), tolerance), tolerance);
     }
-    swapRule = key("swapRule").choiceList()[r.getChoice(key("swapRule"))];
-    nSwap = r.getLabel
-    (
-        key("nSwap"), swapRule == "errorGuided" ? label(key("nSwap").deflt) : 1
-    );
+    // the swap rule's own keywords, read by its settings (in selection all
+    // and greedy too: the default rule's give nSwap's default there)
+    swapRule_.reset(dcpRBFSwapRuleSettings::New(dict).ptr());
+    nSwap = r.getLabel(key("nSwap"), swapRule_->nSwapDefault());
     protectSteps = r.getLabel(key("protectSteps"));
-    swapBlendSteps = r.getLabel(key("swapBlendSteps"));
-    trialAt = r.getEnum(key("trialPoints"), trialPointsNames);
-    trialBackoff = r.getLabel(key("trialBackoff"));
-    trialQualityDrop = r.getScalar(key("trialQualityDrop"));
-    for (const word& k : keywords)
-    {
-        // a swap rule's own keywords
-        const char* rule = key(k.c_str()).rule;
-        if (!rule || !dict.found(k))
-        {
-            continue;
-        }
-        if (swapRule != rule)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Keyword " << k << " has no effect with swapRule "
-                << swapRule << ". It belongs to swapRule " << rule
-                << exit(FatalIOError);
-        }
-        if (nSwap == 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Keyword " << k << " has no effect with nSwap 0 (no trial"
-                << " swaps). It needs nSwap >= 1" << exit(FatalIOError);
-        }
-    }
-
-    if (selection == mode::all)
-    {
-        for (const word& k : keywords)
-        {
-            if (k != "selection" && dict.found(k))
-            {
-                const bool dynamicOnly = dynamicKeywords.found(k);
-                FatalIOErrorInFunction(dict)
-                    << "Keyword " << k << " has no effect with selection all."
-                    << " Allowed selections using it: "
-                    << (dynamicOnly ? "dynamic" : "greedy, dynamic")
-                    << exit(FatalIOError);
-            }
-        }
-    }
-    if (selection != mode::dynamic)
-    {
-        for (const word& k : dynamicKeywords)
-        {
-            if (dict.found(k))
-            {
-                FatalIOErrorInFunction(dict)
-                    << "Keyword " << k << " has no effect with selection "
-                    << modeNames[selection] << ". It belongs to"
-                    << " selection dynamic" << exit(FatalIOError);
-            }
-        }
-    }
+    r.checkScope
+    (
+        "controlPoints", modeNames.toc(), scopeOf(selection),
+        swapRule_->type(), nSwap > 0
+    );
 }
 
 

@@ -49,6 +49,34 @@ const Foam::dcpRBFKeyword& key(const char* name)
     return Foam::dcpRBFKeywords::get("dcpRBFCoeffs", name);
 }
 
+//- The choices of the keywords read into Enums, and of function: the
+//  kernels' names
+using choicesFrom = Foam::dcpRBFKeyword::choicesFrom;
+const choicesFrom metricChoices
+(
+    "dcpRBFCoeffs", "qualityMetric", Foam::dcpRBFSettings::metricNames
+);
+const choicesFrom fvMeshMetricChoices
+(
+    "dcpRBFFvMeshCoeffs", "qualityMetric", Foam::dcpRBFSettings::metricNames
+);
+const choicesFrom floorActionChoices
+(
+    "dcpRBFCoeffs", "qualityFloorAction", Foam::dcpRBFSettings::floorActionNames
+);
+const choicesFrom functionChoices
+(
+    "dcpRBFCoeffs", "function",
+    []()
+    {
+        return
+            Foam::dcpRBFCompat::makeList<Foam::word>
+            (
+                dcprbf::RadialKernel::names()
+            );
+    }
+);
+
 } // End anonymous namespace
 
 
@@ -218,32 +246,14 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
     const pointField& points0
 ) const
 {
-    const scalar radius =
+    // (within the table's bounds in units of the mesh's size)
+    return
         r.getLength
         (
             key("supportRadius"), "movingExtent",
-            [&]() { return movingExtent(mesh, points0); }
+            [&]() { return movingExtent(mesh, points0); },
+            mag(mesh.bounds().span())
         );
-    if (!(radius > 0))
-    {
-        FatalIOErrorInFunction(r.dict())
-            << "Keyword supportRadius must be > 0 [m], got " << radius
-            << exit(FatalIOError);
-    }
-    // Far outside the mesh's size a radius is no length for it (and its
-    // square overflows in the searches)
-    const scalar size = mag(mesh.bounds().span());
-    if (!(radius >= 1e-9*size && radius <= 1e9*size))
-    {
-        FatalIOErrorInFunction(r.dict())
-            << "Keyword supportRadius " << Foam::name(radius).c_str()
-            << " is no length for this mesh (its bounding box's diagonal: "
-            << Foam::name(size).c_str() << "): allowed "
-            << Foam::name(1e-9*size).c_str() << " to "
-            << Foam::name(1e9*size).c_str() << " [m], in practice"
-            << " several times the largest displacement" << exit(FatalIOError);
-    }
-    return radius;
 }
 
 
@@ -287,10 +297,6 @@ dcprbf::RadialKernel Foam::dcpRBFSettings::readKernel
 ) const
 {
     const dcpRBFKeyword& k = key("function");
-    dcpRBFDictReader::checkChoices
-    (
-        k, dcpRBFCompat::makeList<word>(dcprbf::RadialKernel::names())
-    );
     const word name(k.choiceList()[r.getChoice(k)]);
     return dcprbf::RadialKernel::fromName(name, readRadius(r, mesh, points0));
 }

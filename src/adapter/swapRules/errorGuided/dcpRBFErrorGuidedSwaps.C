@@ -32,13 +32,20 @@ Foam::dcpRBFErrorGuidedSwaps::dcpRBFErrorGuidedSwaps
 )
 :
     dcpRBFSwapRule(context, controlPoints, quality, interpolation),
+    settings_
+    (
+        refCast<const dcpRBFErrorGuidedSettings>
+        (
+            context.settings().selection().swapRule()
+        )
+    ),
     trials_(controlPoints.set()),
-    blend_(context.settings().selection().swapBlendSteps),
+    blend_(settings_.swapBlendSteps),
     schedule_
     (
-        context.settings().selection().trialBackoff,
-        dcpRBFSelectionSettings::maxTrialWait,
-        context.settings().selection().trialQualityDrop
+        settings_.trialBackoff,
+        dcpRBFErrorGuidedSettings::maxTrialWait(),
+        settings_.trialQualityDrop
     ),
     windowInterpolation_(context, interpolation)
 {

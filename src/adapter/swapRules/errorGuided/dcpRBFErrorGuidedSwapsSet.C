@@ -34,7 +34,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::endTrials
     }
     // the trials stay started until endStep() (the swaps confirmed: the
     // back-off starts over) or abandonSwaps()
-    if (blend && context_.settings().selection().swapBlendSteps > 1)
+    if (blend && settings_.swapBlendSteps > 1)
     {
         blend_.start(trials_.stepStart());
         controlPoints_.solve(d);

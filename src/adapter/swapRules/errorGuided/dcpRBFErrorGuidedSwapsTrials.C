@@ -52,8 +52,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     // if measured, else of the last step's mesh) and those around the
     // leaving points
     const bool atWindow =
-        context_.settings().selection().trialAt
-     == dcpRBFSelectionSettings::trialPoints::window;
+        settings_.trialAt == dcpRBFErrorGuidedSettings::trialPoints::window;
     dcpRBFTrialMesh mesh
     (
         context_, quality_, interpolation_,
@@ -201,7 +200,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::keepIfBetter
     {
         noSwaps.setMeasurementAside();
     }
-    const label blendSteps = context_.settings().selection().swapBlendSteps;
+    const label blendSteps = settings_.swapBlendSteps;
     if ((kept && !ts.rescue && blendSteps > 1) || !mesh.fieldIsSet())
     {
         ts.state.boundaryError = interpolation_.interpolate(ts.d);
