@@ -169,7 +169,7 @@ void Foam::dcpRBFMotionSolver::moveWithControlPoints
     swapRule_->afterInterpolate(d, step, measured);
     timer_->split(&part::swap);
     // (before the guard: what a later step's mesh without swaps is
-    // compared with, dcpRBFTrialSchedule::endWaitIfWorse)
+    // compared with, dcprbf::TrialSchedule::endWaitIfWorse)
     const dcpRBFQualityRegion::summary* unguarded = quality_->inStep();
     const scalar unguardedMin = unguarded ? unguarded->minQuality : 1;
 

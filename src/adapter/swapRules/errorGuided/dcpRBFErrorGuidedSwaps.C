@@ -94,7 +94,7 @@ void Foam::dcpRBFErrorGuidedSwaps::afterInterpolate
     // waiting after undone trials unless the mesh got worse since
     const bool waitEnded =
         measured && schedule_.endWaitIfWorse(quality_.last().minQuality);
-    const FixedList<label, 2> before(schedule_.save());
+    const dcprbf::TrialSchedule::Saved before(schedule_.save());
     if
     (
         trySwaps(d, step, measured) == 0

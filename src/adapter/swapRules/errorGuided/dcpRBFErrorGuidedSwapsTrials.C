@@ -40,7 +40,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
 )
 {
     // Rescue: without swaps the mesh has inverted cells; the trials do not
-    // wait after fruitless ones, go on while they help (dcpRBFTrialSchedule)
+    // wait after fruitless ones, go on while they help (TrialSchedule)
     // and the swaps apply at once (no blend: an inverted mesh has no smooth
     // motion to keep)
     const trialStep ts{d, step, measured, measured && quality_.last().nInverted > 0};
@@ -82,7 +82,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     // Rescue during a blend: the blend ends at once, the trials start from
     // the new set's mesh (the blend is put back if nothing beats the mesh
     // without swaps)
-    dcpRBFSwapBlend::held blend;
+    dcprbf::SwapBlend::Held blend;
     if (ts.rescue && blend_.active())
     {
         blend = finishBlend(d);
@@ -118,17 +118,17 @@ void Foam::dcpRBFErrorGuidedSwaps::runTrials
 {
     // up to nSwap trials, each kept only if the window's minimum improves
     const label nTrials =
-        dcpRBFTrialSchedule::nTrials
+        dcprbf::TrialSchedule::nTrials
         (
             ts.rescue, context_.settings().selection().nSwap
         );
-    label skip = 0;
+    int skip = 0;
     for (label i = 0; i < nTrials; ++i)
     {
         if
         (
             mesh.worst().quality() >= 1 - 1e-12
-         || !trials_.propose(mesh.worst(), ts.d, skip)
+         || !trials_.propose(mesh.worst().centre(), ts.d, skip)
         )
         {
             break;
@@ -146,7 +146,7 @@ void Foam::dcpRBFErrorGuidedSwaps::runTrials
         }
         ++ts.state.nUndone;
         // rescue: the next leaving point instead, a few times
-        if (!dcpRBFTrialSchedule::tryNextLeaving(ts.rescue, skip))
+        if (!dcprbf::TrialSchedule::tryNextLeaving(ts.rescue, skip))
         {
             break;
         }
@@ -201,7 +201,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::keepIfBetter
     const trialStep& ts,
     const dcpRBFTrialMesh& mesh,
     const label kept,
-    dcpRBFSwapBlend::held&& blend,
+    dcprbf::SwapBlend::Held&& blend,
     dcpRBFSavedStep& noSwaps
 )
 {
