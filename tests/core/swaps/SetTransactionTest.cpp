@@ -3,37 +3,16 @@
 // (indices, ages, the same coefficients), a commit keeps the changes, and
 // one transaction at a time.
 #include "SetTransaction.hpp"
-#include "TestPoints.hpp"
-
-#include <gtest/gtest.h>
+#include "SwapsTestSet.hpp"
 
 #include <vector>
 
 using namespace dcprbf;
-using test::randomPoints;
-using test::smoothField;
 
 namespace
 {
 
-struct SetTransactionFixture : ::testing::Test
-{
-    Points cand = randomPoints(150, 3, 17);
-    Values v = smoothField(cand);
-    DynamicControlSet set
-    {
-        cand, std::vector<char>(cand.rows(), 1),
-        RadialKernel::fromName("WendlandC2", 0.6), true, 3, DynamicControlSet::Options()
-    };
-
-    void SetUp() override
-    {
-        std::vector<Eigen::Index> idx;
-        for (Eigen::Index i = 0; i < cand.rows(); i += 3) idx.push_back(i);
-        set.reset(idx);
-        set.solve(v);
-    }
-};
+using SetTransactionFixture = test::SwapsTestSet;
 
 TEST_F(SetTransactionFixture, RollBackRestoresTheSetBitForBit)
 {

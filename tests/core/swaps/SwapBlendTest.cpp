@@ -3,36 +3,16 @@
 // ..., the new set alone at the K-th step; take/resume; stop; refresh and
 // restart = a state factorized afresh.
 #include "SwapBlend.hpp"
-#include "TestPoints.hpp"
-
-#include <gtest/gtest.h>
+#include "SwapsTestSet.hpp"
 
 #include <vector>
 
 using namespace dcprbf;
-using test::randomPoints;
-using test::smoothField;
 
 namespace
 {
 
-struct SwapBlendFixture : ::testing::Test
-{
-    Points cand = randomPoints(120, 3, 21);
-    Values v = smoothField(cand);
-    DynamicControlSet set
-    {
-        cand, std::vector<char>(cand.rows(), 1),
-        RadialKernel::fromName("WendlandC2", 0.7), true, 3, DynamicControlSet::Options()
-    };
-
-    void SetUp() override
-    {
-        std::vector<Eigen::Index> idx;
-        for (Eigen::Index i = 0; i < cand.rows(); i += 3) idx.push_back(i);
-        set.reset(idx);
-    }
-};
+using SwapBlendFixture = test::SwapsTestSet;
 
 TEST_F(SwapBlendFixture, WeightsGoFromOneKthToOneOverKSteps)
 {
@@ -52,9 +32,9 @@ TEST_F(SwapBlendFixture, WeightsGoFromOneKthToOneOverKSteps)
         // the K-th step is the new set's alone (weight 1)
         EXPECT_EQ(steps, K) << "K " << K;
         ASSERT_EQ(int(w.size()), K - 1) << "K " << K;
-        for (int k = 0; k < K - 1; ++k)
+        for (int s = 0; s < K - 1; ++s)
         {
-            EXPECT_EQ(w[k], double(k + 1)/K) << "K " << K << " step " << k + 1;
+            EXPECT_EQ(w[s], double(s + 1)/K) << "K " << K << " step " << s + 1;
         }
         b.advance();
         EXPECT_FALSE(b.active()) << "advance() without a blend: none";
@@ -105,13 +85,9 @@ TEST_F(SwapBlendFixture, RefreshAndRestartGiveTheFreshState)
     SwapBlend b(4);
     b.start(set.state());
     const DynamicControlSet::State fresh = set.freshState(set.indices(), set.ages());
-    Values vc(set.size(), 3);
-    for (Eigen::Index k = 0; k < set.size(); ++k) vc.row(k) = v.row(set.indices()[k]);
-    Values a0, a3;
-    Eigen::MatrixX3d b0, b3;
-    b.from().solver.solve(vc, a0, b0);
-    fresh.solver.solve(vc, a3, b3);
-    ASSERT_FALSE(a0 == a3) << "the updated set differs from a fresh one at round-off";
+    const auto c3 = coefficients(fresh);
+    ASSERT_FALSE(coefficients(b.from()).first == c3.first)
+        << "the updated set differs from a fresh one at round-off";
     b.refresh(set);
     SwapBlend r(4);
     r.restart(1, set.freshState(b.from().indices, b.from().ages));
@@ -119,12 +95,10 @@ TEST_F(SwapBlendFixture, RefreshAndRestartGiveTheFreshState)
     EXPECT_EQ(r.step(), 1);
     EXPECT_EQ(r.from().indices, b.from().indices);
     EXPECT_EQ(r.from().ages, b.from().ages);
-    Values a1, a2;
-    Eigen::MatrixX3d b1, b2;
-    b.from().solver.solve(vc, a1, b1);
-    r.from().solver.solve(vc, a2, b2);
-    EXPECT_TRUE(a1 == a3 && b1 == b3) << "refresh() = a fresh factorization";
-    EXPECT_TRUE(a2 == a3 && b2 == b3) << "restart() = a fresh factorization";
+    const auto c1 = coefficients(b.from());
+    const auto c2 = coefficients(r.from());
+    EXPECT_TRUE(c1.first == c3.first && c1.second == c3.second) << "refresh() = a fresh factorization";
+    EXPECT_TRUE(c2.first == c3.first && c2.second == c3.second) << "restart() = a fresh factorization";
     // without a blend refresh() does nothing
     SwapBlend none(4);
     none.refresh(set);

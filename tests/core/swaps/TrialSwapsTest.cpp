@@ -5,17 +5,13 @@
 // the set back bit for bit, end() counts the kept ones, and no candidate
 // means no proposal and the set unchanged.
 #include "TrialSwaps.hpp"
-#include "TestPoints.hpp"
-
-#include <gtest/gtest.h>
+#include "SwapsTestSet.hpp"
 
 #include <algorithm>
 #include <iterator>
 #include <vector>
 
 using namespace dcprbf;
-using test::randomPoints;
-using test::smoothField;
 
 namespace
 {
@@ -30,52 +26,39 @@ std::vector<Index> sorted(const DynamicControlSet& s)
     return i;
 }
 
-struct TrialSwapsFixture : ::testing::Test
+struct TrialSwapsFixture : test::SwapsTestSet
 {
-    Points cand = randomPoints(200, 3, 31);
-    Values v = smoothField(cand);
-    RadialKernel k = RadialKernel::fromName("WendlandC2", 0.6);
-    DynamicControlSet set
-    {
-        cand, std::vector<char>(cand.rows(), 1), k, true, 3, DynamicControlSet::Options()
-    };
     const Eigen::RowVector3d worst{0.5, 0.4, 0.6};
 
-    void SetUp() override
-    {
-        std::vector<Index> idx;
-        for (Index i = 0; i < cand.rows(); i += 4) idx.push_back(i);
-        set.reset(idx);
-        set.solve(v);
-    }
-
-    //- The coefficients of the set's interpolant of v (its own solve)
     std::pair<Values, Eigen::MatrixX3d> coefficients() const
     {
-        Values vc(set.size(), 3);
-        for (Index j = 0; j < set.size(); ++j) vc.row(j) = v.row(set.indices()[j]);
-        Values alpha;
-        Eigen::MatrixX3d beta;
-        set.solver().solve(vc, alpha, beta);
-        return {alpha, beta};
+        return SwapsTestSet::coefficients(set.state());
     }
 
-    //- Indices, ages, coefficients and the solved interpolant: as before?
-    void expectAsBefore
-    (
-        const std::vector<Index>& idx,
-        const std::vector<int>& ages,
-        const std::pair<Values, Eigen::MatrixX3d>& coef,
-        const Values& values
-    )
+    //- The set's indices, ages, coefficients and solved interpolant
+    struct Snapshot
     {
-        EXPECT_EQ(set.indices(), idx);
-        EXPECT_EQ(set.ages(), ages);
+        std::vector<Index> idx;
+        std::vector<int> ages;
+        std::pair<Values, Eigen::MatrixX3d> coef;
+        Values values;
+    };
+
+    Snapshot snapshot() const
+    {
+        return {set.indices(), set.ages(), coefficients(), set.evaluator().evaluate(cand)};
+    }
+
+    //- The set as in the snapshot, bit for bit?
+    void expectAsBefore(const Snapshot& b)
+    {
+        EXPECT_EQ(set.indices(), b.idx);
+        EXPECT_EQ(set.ages(), b.ages);
         const auto c = coefficients();
-        EXPECT_TRUE(c.first == coef.first) << "alpha bit for bit";
-        EXPECT_TRUE(c.second == coef.second) << "beta bit for bit";
+        EXPECT_TRUE(c.first == b.coef.first) << "alpha bit for bit";
+        EXPECT_TRUE(c.second == b.coef.second) << "beta bit for bit";
         set.solve(v);
-        EXPECT_TRUE(set.evaluator().evaluate(cand) == values);
+        EXPECT_TRUE(set.evaluator().evaluate(cand) == b.values);
     }
 };
 
@@ -135,16 +118,14 @@ TEST_F(TrialSwapsFixture, SkipSkipsLeavingPoints)
 
 TEST_F(TrialSwapsFixture, UndoRestoresTheExactState)
 {
-    const std::vector<Index> idx = set.indices();
-    const std::vector<int> ages = set.ages();
-    const auto coef = coefficients();
-    const Values values = set.evaluator().evaluate(cand);
+    const Snapshot before = snapshot();
+    const std::vector<Index> idx = before.idx;
     TrialSwaps t(set);
     ASSERT_TRUE(t.propose(worst, v, 0));
     ASSERT_NE(set.indices(), idx);
     set.solve(v);   // the caller solves the proposal
     t.undo();
-    expectAsBefore(idx, ages, coef, values);
+    expectAsBefore(before);
     EXPECT_TRUE(t.started()) << "undone, still this step's trials";
     EXPECT_EQ(t.end(), 0);
     EXPECT_FALSE(t.started()) << "none kept: the trials are over";
@@ -153,10 +134,8 @@ TEST_F(TrialSwapsFixture, UndoRestoresTheExactState)
 
 TEST_F(TrialSwapsFixture, AbandonRestoresTheStepStartAcrossKeptTrials)
 {
-    const std::vector<Index> idx = set.indices();
-    const std::vector<int> ages = set.ages();
-    const auto coef = coefficients();
-    const Values values = set.evaluator().evaluate(cand);
+    const Snapshot before = snapshot();
+    const std::vector<Index> idx = before.idx;
     TrialSwaps t(set);
     std::vector<Index> kept;
     for (int i = 0; i < 3; ++i)
@@ -175,7 +154,7 @@ TEST_F(TrialSwapsFixture, AbandonRestoresTheStepStartAcrossKeptTrials)
     EXPECT_EQ(t.stepStart().indices, idx);
     t.abandon();
     EXPECT_FALSE(t.started());
-    expectAsBefore(idx, ages, coef, values);
+    expectAsBefore(before);
 }
 
 TEST_F(TrialSwapsFixture, EndCountsTheKeptAndConfirmKeepsThem)
@@ -207,16 +186,14 @@ TEST_F(TrialSwapsFixture, EndCountsTheKeptAndConfirmKeepsThem)
 
 TEST_F(TrialSwapsFixture, NoCandidateNoProposalTheSetUnchanged)
 {
-    const std::vector<Index> idx = set.indices();
-    const std::vector<int> ages = set.ages();
-    const auto coef = coefficients();
-    const Values values = set.evaluator().evaluate(cand);
+    const Snapshot before = snapshot();
+    const std::vector<Index> idx = before.idx;
     TrialSwaps t(set);
     // no joining point: no error above the floor (values the set reproduces)
     set.solve(Values::Zero(cand.rows(), 3));
     EXPECT_FALSE(t.propose(worst, Values::Zero(cand.rows(), 3), 0));
     EXPECT_FALSE(t.started());
-    expectAsBefore(idx, ages, coef, values);
+    expectAsBefore(before);
     // no leaving point: none removable
     DynamicControlSet fixed(cand, std::vector<char>(cand.rows(), 0), k, true, 3, DynamicControlSet::Options());
     fixed.reset(idx);
