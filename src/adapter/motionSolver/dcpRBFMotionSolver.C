@@ -170,7 +170,7 @@ void Foam::dcpRBFMotionSolver::solve()
 
     // Swap (swapRule errorGuided: trial swaps kept where they help); what
     // a later step's mesh without swaps is compared with is the quality
-    // before the guard (dcpRBFTrialSchedule::endWaitIfWorse)
+    // before the guard (dcprbf::TrialSchedule::endWaitIfWorse)
     scalar unguardedMin = 1;
     if (interpolant)
     {

@@ -7,6 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFSwapRule.H"
+#include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -14,6 +15,9 @@ namespace Foam
 {
     defineTypeNameAndDebug(dcpRBFSwapRule, 0);
     defineRunTimeSelectionTable(dcpRBFSwapRule, context);
+
+    // the base: no swaps (selection all and greedy)
+    addNamedToRunTimeSelectionTable(dcpRBFSwapRule, dcpRBFSwapRule, context, none);
 }
 
 

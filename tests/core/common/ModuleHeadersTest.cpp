@@ -5,6 +5,7 @@
 #include "Kernels.hpp"
 #include "LinearAlgebra.hpp"
 #include "Selection.hpp"
+#include "Swaps.hpp"
 #include "Evaluation.hpp"
 #include "SpatialSearch.hpp"
 #include "Quality.hpp"
@@ -23,6 +24,7 @@ TEST(ModuleHeaders, DeclareThePublicClasses)
     EXPECT_TRUE(std::is_class<RadialKernel>::value);
     EXPECT_TRUE(std::is_class<SaddleFactorization>::value);
     EXPECT_TRUE(std::is_class<GreedySelector>::value);
+    EXPECT_TRUE(std::is_class<TrialSwaps>::value);
     EXPECT_TRUE(std::is_class<StoredEvaluation>::value);
     EXPECT_TRUE(std::is_class<PointTree>::value);
     EXPECT_TRUE(std::is_class<CellQualityScan>::value);

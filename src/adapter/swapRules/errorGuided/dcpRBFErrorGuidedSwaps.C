@@ -79,14 +79,7 @@ bool Foam::dcpRBFErrorGuidedSwaps::measuresFirst() const
     // trials due, not a rescue (the last step's mesh had no inverted cell),
     // and the last step's measurement to pick the window from
     const dcpRBFQualityRegion::summary& last = quality_.last();
-    return !
-    (
-        canTrial(false)
-     && last.nCells > 0
-     && last.nInverted == 0
-     && !last.worst.empty()
-     && last.minQuality < 1 - 1e-12
-    );
+    return !(canTrial(false) && last.nCells > 0 && last.nInverted == 0);
 }
 
 
@@ -100,7 +93,7 @@ void Foam::dcpRBFErrorGuidedSwaps::afterInterpolate
     // waiting after undone trials unless the mesh got worse since
     const bool waitEnded =
         measured && schedule_.endWaitIfWorse(quality_.last().minQuality);
-    const FixedList<label, 2> before(schedule_.save());
+    const dcprbf::TrialSchedule::Saved before(schedule_.save());
     if
     (
         trySwaps(d, step, measured) == 0

@@ -12,6 +12,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFErrorGuidedSwaps.H"
+#include "dcpRBFTrialState.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -57,10 +58,10 @@ void Foam::dcpRBFErrorGuidedSwaps::abandonSwaps(const dcprbf::Values& d)
 }
 
 
-Foam::dcpRBFSwapBlend::held
+dcprbf::SwapBlend::Held
 Foam::dcpRBFErrorGuidedSwaps::finishBlend(const dcprbf::Values& d)
 {
-    dcpRBFSwapBlend::held b(blend_.take());
+    dcprbf::SwapBlend::Held b(blend_.take());
     controlPoints_.setChanged();
     controlPoints_.solve(d);
     return b;
@@ -69,7 +70,7 @@ Foam::dcpRBFErrorGuidedSwaps::finishBlend(const dcprbf::Values& d)
 
 void Foam::dcpRBFErrorGuidedSwaps::resumeBlend
 (
-    dcpRBFSwapBlend::held&& b,
+    dcprbf::SwapBlend::Held&& b,
     const dcprbf::Values& d
 )
 {
@@ -81,18 +82,18 @@ void Foam::dcpRBFErrorGuidedSwaps::resumeBlend
 
 void Foam::dcpRBFErrorGuidedSwaps::storeState(dictionary& state) const
 {
-    schedule_.write(state);
-    blend_.write(state);
+    dcpRBFTrialState::write(schedule_, state);
+    dcpRBFTrialState::write(blend_, state);
 }
 
 
 void Foam::dcpRBFErrorGuidedSwaps::readState()
 {
     const dcpRBFStateDictionary& state = controlPoints_.state();
-    schedule_.read(state);
+    dcpRBFTrialState::read(state, schedule_);
     try
     {
-        blend_.read(state, controlPoints_.set());
+        dcpRBFTrialState::read(state, controlPoints_.set(), blend_);
     }
     catch (const dcprbf::Error& e)
     {

@@ -18,10 +18,15 @@ Description
 
 bool Foam::dcpRBFErrorGuidedSwaps::canTrial(const bool rescue) const
 {
+    // the set ready, trials allowed, and a cell below the best quality in
+    // the last measurement to pick the window from
+    const dcpRBFQualityRegion::summary& last = quality_.last();
     return
         controlPoints_.ready()
      && (rescue || (!blend_.active() && !schedule_.waiting()))
-     && context_.settings().selection().nSwap > 0;
+     && context_.settings().selection().nSwap > 0
+     && !last.worst.empty()
+     && last.minQuality < 1 - 1e-12;
 }
 
 
@@ -33,16 +38,11 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
 )
 {
     // Rescue: without swaps the mesh has inverted cells; the trials do not
-    // wait after fruitless ones, go on while they help (dcpRBFTrialSchedule)
+    // wait after fruitless ones, go on while they help (TrialSchedule)
     // and the swaps apply at once (no blend: an inverted mesh has no smooth
     // motion to keep)
     const trialStep ts{d, step, measured, measured && quality_.last().nInverted > 0};
-    if
-    (
-        !canTrial(ts.rescue)
-     || quality_.last().worst.empty()
-     || quality_.last().minQuality >= 1 - 1e-12
-    )
+    if (!canTrial(ts.rescue))
     {
         return 0;
     }
@@ -70,7 +70,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     // Rescue during a blend: the blend ends at once, the trials start from
     // the new set's mesh (the blend is put back if nothing beats the mesh
     // without swaps)
-    dcpRBFSwapBlend::held blend;
+    dcprbf::SwapBlend::Held blend;
     if (ts.rescue && blend_.active())
     {
         blend = finishBlend(d);
@@ -106,17 +106,17 @@ void Foam::dcpRBFErrorGuidedSwaps::runTrials
 {
     // up to nSwap trials, each kept only if the window's minimum improves
     const label nTrials =
-        dcpRBFTrialSchedule::nTrials
+        dcprbf::TrialSchedule::nTrials
         (
             ts.rescue, context_.settings().selection().nSwap
         );
-    label skip = 0;
+    int skip = 0;
     for (label i = 0; i < nTrials; ++i)
     {
         if
         (
             mesh.worst().quality() >= 1 - 1e-12
-         || !trials_.propose(mesh.worst(), ts.d, skip)
+         || !trials_.propose(mesh.worst().centre(), ts.d, skip)
         )
         {
             break;
@@ -134,7 +134,7 @@ void Foam::dcpRBFErrorGuidedSwaps::runTrials
         }
         ++ts.state.nUndone;
         // rescue: the next leaving point instead, a few times
-        if (!dcpRBFTrialSchedule::tryNextLeaving(ts.rescue, skip))
+        if (!dcprbf::TrialSchedule::tryNextLeaving(ts.rescue, skip))
         {
             break;
         }
@@ -188,7 +188,7 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::keepIfBetter
     const trialStep& ts,
     const dcpRBFTrialMesh& mesh,
     const label kept,
-    dcpRBFSwapBlend::held&& blend,
+    dcprbf::SwapBlend::Held&& blend,
     dcpRBFSavedStep& noSwaps
 )
 {
@@ -209,11 +209,20 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::keepIfBetter
     // better than the window without swaps (and valid) is better than the
     // whole mesh without them; else that mesh is measured to compare
     const dcpRBFQualityRegion::summary& q = quality_.last();
-    const bool better =
-        ts.measured
-      ? q.minQuality > noSwaps.measurement().minQuality
-      : (q.nInverted == 0 && q.minQuality > mesh.startMin())
-     || beatsUnswapped(noSwaps, ts.state);
+    bool better = false;
+    if (ts.measured)
+    {
+        better = q.minQuality > noSwaps.measurement().minQuality;
+    }
+    else if (q.nInverted == 0 && q.minQuality > mesh.startMin())
+    {
+        better = true;
+    }
+    else
+    {
+        // the mesh without swaps measured in its place to compare
+        better = beatsUnswapped(noSwaps, ts.state);
+    }
     if (better)
     {
         noSwaps.keep();
