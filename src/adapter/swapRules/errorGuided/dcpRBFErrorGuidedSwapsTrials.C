@@ -12,6 +12,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFErrorGuidedSwaps.H"
+#include "syncTools.H"
 #include "OStringStream.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -81,7 +82,11 @@ Foam::label Foam::dcpRBFErrorGuidedSwaps::trySwaps
     const label kept = endTrials(d, !ts.rescue);
     if (mesh.windowed())
     {
-        step.trialPoints = mesh.window().nGlobalPoints();
+        if (Pstream::parRun() && masterPoints_.empty())
+        {
+            masterPoints_ = syncTools::getMasterPoints(context_.mesh());
+        }
+        step.trialPoints = mesh.window().nGlobalPoints(masterPoints_);
     }
     if (kept || blend.from)
     {

@@ -162,7 +162,10 @@ Foam::dcpRBFTrialWindow::dcpRBFTrialWindow
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::dcpRBFTrialWindow::nGlobalPoints() const
+Foam::label Foam::dcpRBFTrialWindow::nGlobalPoints
+(
+    const bitSet& masterPoints
+) const
 {
     if (!Pstream::parRun())
     {
@@ -171,7 +174,6 @@ Foam::label Foam::dcpRBFTrialWindow::nGlobalPoints() const
     // a point in any processor's list, counted by its master
     // (labels: OpenFOAM's exchange of bools trips GCC's allocation-size
     // warning, an error in CI)
-    const bitSet masterPoints(syncTools::getMasterPoints(mesh_));
     labelList in(mesh_.nPoints(), 0);
     for (const label pointi : points_)
     {
