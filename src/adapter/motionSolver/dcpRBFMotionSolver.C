@@ -149,13 +149,6 @@ void Foam::dcpRBFMotionSolver::solve()
     // Interpolate and correct (the boundary snapped, the constraints)
     step.boundaryError = interpolation_.interpolate(d);
     log_.split(&part::interpolate);
-    if (debug && interpolant)
-    {
-        memory_.report
-        (
-            interpolation_.storedBytes(), controlPoints_.block().storedBytes()
-        );
-    }
 
     // Check: the new mesh's quality, unless nothing moves or the swap rule
     // measures the mesh it keeps itself (one measurement)

@@ -20,7 +20,6 @@ Foam::dcpRBFStages::dcpRBFStages
     const bool debug
 )
 :
-    memory_(debug),
     context_(mesh, solverDict, coeffs, pointDisplacement, points0, debug),
     controlPoints_(context_),
     rotation_(context_),
