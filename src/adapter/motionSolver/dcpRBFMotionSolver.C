@@ -110,23 +110,10 @@ void Foam::dcpRBFMotionSolver::writeLog()
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::dcpRBFMotionSolver::solve()
+dcprbf::Values Foam::dcpRBFMotionSolver::prescribe()
 {
-    typedef dcpRBFStepLog::times part;
-    step_ = dcpRBFStepState();
-    dcpRBFStepState& step = step_;
-    quality_.startStep();
-    log_.start();
-
-    // Swap before the solve (swapRule nearest: from the mesh as it is)
-    swapRule_->beforeSolve(step);
-    log_.split(&part::swap);
-
-    // Prescribe: the step's boundary displacement (one evaluation of the
-    // conditions); the bodies' rigid motions blended, the RBF interpolates
-    // the rest
+    // One evaluation of the conditions; the bodies' rigid motions blended,
+    // the RBF interpolates the rest
     prescribed_.read();
     dcprbf::Values d(context_.boundaryPoints().gather(prescribed_.values()));
     if (rotation_.active())
@@ -134,7 +121,12 @@ void Foam::dcpRBFMotionSolver::solve()
         d = rotation_.fit(d);
         rotation_.report(Info);
     }
+    return d;
+}
 
+
+bool Foam::dcpRBFMotionSolver::interpolate(const dcprbf::Values& d)
+{
     // Select: the set chosen once something moves, solved for d,
     // re-selected while the boundary error is too large (no set: the null
     // interpolant)
@@ -142,54 +134,92 @@ void Foam::dcpRBFMotionSolver::solve()
     if (interpolant)
     {
         controlPoints_.solve(d);
-        step.nAdded += controlPoints_.reselect(d, step.atMaxPoints);
+        step_.nAdded += controlPoints_.reselect(d, step_.atMaxPoints);
     }
     log_.split(&part::select);
 
     // Interpolate and correct (the boundary snapped, the constraints)
-    step.boundaryError = interpolation_.interpolate(d);
+    step_.boundaryError = interpolation_.interpolate(d);
     log_.split(&part::interpolate);
+    return interpolant;
+}
 
+
+Foam::scalar Foam::dcpRBFMotionSolver::checkAndSwap
+(
+    const dcprbf::Values& d,
+    const bool interpolant,
+    const bool moves
+)
+{
     // Check: the new mesh's quality, unless nothing moves or the swap rule
     // measures the mesh it keeps itself (one measurement)
-    const bool moves =
-        interpolant || rotation_.active() || prescribed_.selfMoved().size();
     const bool measured =
         moves && (!interpolant || swapRule_->measuresFirst());
     if (measured)
     {
         quality_.measure();
     }
+    if (!interpolant)
+    {
+        return 1;
+    }
 
     // Swap (swapRule errorGuided: trial swaps kept where they help); what
     // a later step's mesh without swaps is compared with is the quality
     // before the guard (dcprbf::TrialSchedule::endWaitIfWorse)
-    scalar unguardedMin = 1;
-    if (interpolant)
-    {
-        swapRule_->afterInterpolate(d, step, measured);
-        log_.split(&part::swap);
-        const dcpRBFQualityRegion::summary* unguarded = quality_.inStep();
-        unguardedMin = unguarded ? unguarded->minQuality : 1;
-    }
+    swapRule_->afterInterpolate(d, step_, measured);
+    log_.split(&part::swap);
+    const dcpRBFQualityRegion::summary* unguarded = quality_.inStep();
+    return unguarded ? unguarded->minQuality : 1;
+}
 
-    // Guard
+
+void Foam::dcpRBFMotionSolver::endStep
+(
+    const dcprbf::Values& d,
+    const scalar unguardedMin
+)
+{
+    step_.nControl = controlPoints_.size();
+    controlPoints_.endStep();
+    swapRule_->endStep(unguardedMin);
+    if (mesh().time().writeTime())
+    {
+        writer_.write(controlPoints_.set(), d);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dcpRBFMotionSolver::solve()
+{
+    step_ = dcpRBFStepState();
+    quality_.startStep();
+    log_.start();
+
+    // Swap before the solve (swapRule nearest: from the mesh as it is)
+    swapRule_->beforeSolve(step_);
+    log_.split(&part::swap);
+
+    // Prescribe, select, interpolate, check and swap (what the swaps are
+    // later judged against: the quality before the guard), guard
+    const dcprbf::Values d(prescribe());
+    const bool interpolant = interpolate(d);
+    const bool moves =
+        interpolant || rotation_.active() || prescribed_.selfMoved().size();
+    const scalar unguardedMin = checkAndSwap(d, interpolant, moves);
     if (moves)
     {
-        guard_.apply(d, step);
+        guard_.apply(d, step_);
         log_.split(&part::guard);
     }
 
     // End of step: the set's, the rule's, the control points written
     if (interpolant)
     {
-        step.nControl = controlPoints_.size();
-        controlPoints_.endStep();
-        swapRule_->endStep(unguardedMin);
-        if (mesh().time().writeTime())
-        {
-            writer_.write(controlPoints_.set(), d);
-        }
+        endStep(d, unguardedMin);
     }
 
     // The conditions' last word; the measured points stay the new points
