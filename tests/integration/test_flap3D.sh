@@ -1,0 +1,98 @@
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+# shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
+# Integration test: the flap3D tutorial shortened (coarse mesh, 4 steps to the
+# flap's +40 deg at t = 20): the hinge's three bodies (the wing still, the
+# strip turning by the blend of hingeStripDisplacement, the flap turning
+# rigidly about the hinge) land where the formulas put every point of their
+# surfaces, checkMesh passes; the same on 2 processors split across the
+# span gives the serial points; a hinge point off the motion's axis is
+# refused, naming hingePoint.
+
+# flap3DCoarse: the tutorial's case on its coarse mesh, to t = 20 in 4 steps
+flap3DCoarse() {
+    local py tut="$top/tutorials/flap3D" wall
+    py=$(pythonWithGmsh) || fail "no python with gmsh" || return 1
+    "$py" "$tut/flapMesh.py" flap.msh --coarse > log.mesh 2>&1 || fail "gmsh failed: $(tail -3 log.mesh)" || return 1
+    cp -r "$tut/system" "$tut/constant" .
+    rm -rf constant/polyMesh
+    cp -r "$tut/0.orig" 0
+    run gmshToFoam flap.msh || return 1
+    for wall in wing hinge flap
+    do
+        foamDictionary constant/polyMesh/boundary -entry entry0/$wall/type -set wall > /dev/null
+    done
+    foamDictionary constant/polyMesh/boundary -entry entry0/symmetry/type -set symmetryPlane > /dev/null
+    foamDictionary system/controlDict -entry endTime -set 20 > /dev/null
+    foamDictionary system/controlDict -entry deltaT -set 5 > /dev/null
+    foamDictionary system/controlDict -entry writeInterval -set 20 > /dev/null
+}
+
+# surfaceAsFormula TIME DEG: every point of wing, hinge and flap at TIME is
+# turned about the hinge line (x = 0.75, z = 0, along y) by s DEG, s the
+# strip's quintic blend of x0 from 0 at x0 = 0.70 to 1 at x0 = 0.80 (1e-9 m)
+surfaceAsFormula() {
+    local p
+    for p in wing hinge flap
+    do
+        awk -v patch=$p -f "$here/cases/patchPoints.awk" constant/polyMesh/boundary constant/polyMesh/faces
+    done | sort -un > surface.labels
+    [ "$(wc -l < surface.labels)" -gt 1000 ] || fail "only $(wc -l < surface.labels) surface points" || return 1
+    paste -d' ' <(awk '/^\(.*\)$/ && NF == 3 { gsub(/[()]/, ""); print }' constant/polyMesh/points) \
+                <(awk '/^\(.*\)$/ && NF == 3 { gsub(/[()]/, ""); print }' "$1/polyMesh/points") \
+        | awk -v deg="$2" 'NR == FNR { on[$1 + 1] = 1; next }
+        function abs(v) { return v < 0 ? -v : v }
+        (FNR in on) {
+            t = ($1 - 0.70)/0.10; t = t < 0 ? 0 : (t > 1 ? 1 : t)
+            s = t*t*t*(10 - 15*t + 6*t*t)
+            a = s*deg*atan2(0, -1)/180; u = $1 - 0.75
+            ex = 0.75 + u*cos(a) + $3*sin(a); ez = -u*sin(a) + $3*cos(a)
+            err = abs($4 - ex) + abs($5 - $2) + abs($6 - ez)
+            if (err > worst) worst = err
+            if (s > 0 && s < 1) nStrip++
+            n++
+        }
+        END {
+            printf "%d surface points (%d inside the strip), largest error %g m\n", n, nStrip, worst
+            exit !(worst <= 1e-9 && nStrip > 100)
+        }' surface.labels - || fail "the surface is not where the hinge formulas put it"
+}
+
+test_flap3D_hingeBodies_meshValidSurfaceAsFormula() {
+    flap3DCoarse || return 1
+    run moveDynamicMesh || return 1
+    reportsSetUp WendlandC2 3D
+    meshOkAtEveryTime || return 1
+    surfaceAsFormula 20 40
+}
+
+# The same motion on 2 processors (the tutorial's decomposition, split in y
+# across the span: through the wing, the strip and the flap) gives the serial
+# points; decomposePar keeps hingeStripDisplacement
+test_flap3D_parallelEqualsSerial() {
+    flap3DCoarse || return 1
+    parallelEqualsSerial 20 'method hierarchical; coeffs { n (1 2 1); order xyz; }' || return 1
+    local p
+    for p in 0 1
+    do
+        grep -q hingeStripDisplacement "par/processor$p/0/pointDisplacement" \
+            || fail "decomposePar lost hingeStripDisplacement (processor$p)"
+    done
+}
+
+# A hinge point off the motion's axis: the strip could not meet the flap;
+# refused at the first step that turns, naming hingePoint; a blend that ends
+# before it starts: refused at the start, naming blendEnd
+test_flap3D_hingeOffAxisRefused() {
+    flap3DCoarse || return 1
+    foamDictionary 0/pointDisplacement -entry boundaryField/hinge/hingePoint -set "(0.70 0 0)" > /dev/null
+    ! moveDynamicMesh > log.moveDynamicMesh 2>&1 || fail "a hinge point off the axis was accepted"
+    grep -A6 "FOAM FATAL ERROR" log.moveDynamicMesh | tr '\n' ' ' > fatal
+    grep -q "patch hinge (hingeStripDisplacement).* moves hingePoint (0.69[0-9]* 0 0)" fatal \
+        || fail "the FatalError does not name hingePoint: $(head -c 400 fatal)"
+    foamDictionary 0/pointDisplacement -entry boundaryField/hinge/hingePoint -set "(0.75 0 0)" > /dev/null
+    foamDictionary 0/pointDisplacement -entry boundaryField/hinge/blendEnd -set "-0.1" > /dev/null
+    ! moveDynamicMesh > log.moveDynamicMesh.2 2>&1 || fail "blendEnd before blendStart was accepted"
+    grep -A6 "FOAM FATAL IO ERROR" log.moveDynamicMesh.2 | tr '\n' ' ' > fatal
+    grep -q "patch hinge: blendEnd -0.1[0-9]* must be greater than blendStart -0.05[0-9]*" fatal \
+        || fail "the FatalIOError does not name blendEnd: $(head -c 400 fatal)"
+}

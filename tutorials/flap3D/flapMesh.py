@@ -1,0 +1,324 @@
+#!/usr/bin/python3
+# dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
+"""Rectangular half wing (NACA 0012) with a full-span trailing-edge flap in a
+far-field box with a symmetry plane at the root: prism layers on the wing,
+tetrahedra elsewhere, written for gmshToFoam (msh 2.2).
+
+Wing: chord 1 m, semi-span 2 m, no sweep, taper, twist or dihedral, flat tip
+cap. The section is NACA 0012 with its standard blunt trailing edge (0.25 %
+of the chord thick: a sharp one gives prisms that fail checkMesh, see
+../wing3D/README.md). Axes: x streamwise, y along the span (root at y = 0),
+z up; the leading edge of the root at the origin. The flap's hinge line is
+x = 0.75, z = 0, along y.
+
+Patches: the wing surface is cut at x = 0.70 and x = 0.80 (upper and lower
+surfaces along the whole span, and the tip cap) into wing (x < 0.70: the
+leading edge and the front of the tip cap), hinge (the strip 0.70 < x < 0.80,
+which bends when the flap turns: finely meshed across) and flap (x > 0.80:
+with the trailing-edge base and the aft part of the tip cap); the cut lines
+are curves of the geometry, edges shared by the patches. symmetry (y = 0),
+farfield (the other five faces of the box).
+
+Usage: flapMesh.py [output.msh] [--coarse] [--size-wing H] ...
+"""
+import argparse
+import math
+import sys
+
+import gmsh
+
+CHORD = 1.0
+SEMI_SPAN = 2.0
+HINGE_X = 0.75           # the hinge line: x = 0.75, z = 0, along y
+CUTS = (0.70, 0.80)      # the chordwise cuts: wing | hinge | flap
+# Meshed sheared by x += SHEAR*y (2e-6 m at the tip), unsheared when written:
+# gmsh 4.8's boundary-layer extrusion keeps its normals in a set ordered by
+# x, y, z with a tolerance of 1e-12, and on a cylindrical (unswept) wing the
+# surface mesher gives rows of nodes whose x differ by 1e-15..1e-11 only:
+# the set's order is then inconsistent and some nodes' normals are not found
+# (no layers there: collapsed prisms, or a node doubled between prisms and
+# tetrahedra, depending on the memory layout of the run). Sheared, the x of
+# the nodes of a row differ by >= 1e-9 m.
+SHEAR = 1e-6
+
+
+def naca00(x, t):
+    """Half thickness of a NACA 00tt section, standard (blunt) trailing edge:
+    0.252 % of the chord thick at x = 1 for t = 0.12."""
+    return 5*t*(0.2969*math.sqrt(x) - 0.1260*x - 0.3516*x**2
+                + 0.2843*x**3 - 0.1015*x**4)
+
+
+def section(geo, y, thickness, n):
+    """The section at y as a closed chain of 7 curves, each from points[i] to
+    points[(i + 1) % 7]: upper flap, hinge and front (TE -> LE), lower front,
+    hinge and flap (LE -> TE), trailing-edge base (lower -> upper); points:
+    upper TE, upper cuts at 0.80 and 0.70, LE, lower cuts at 0.70 and 0.80,
+    lower TE. One spline per side through the cut points, split there (the
+    pieces join with a continuous tangent)."""
+    xs = [0.5*(1 - math.cos(math.pi*i/n)) for i in range(n + 1)]
+    # the cosine points, those too close to a cut replaced by the cut
+    xs = sorted([x for x in xs if min(abs(x - c) for c in CUTS) > 0.3/n] + list(CUTS))
+
+    def pt(x, side):
+        return geo.addPoint(CHORD*x + SHEAR*y, y, side*CHORD*naca00(x, thickness))
+
+    upper = [pt(x, 1) for x in reversed(xs)]        # TE -> LE
+    lower = [upper[-1]] + [pt(x, -1) for x in xs[1:]]   # LE -> TE
+    cutsU = [upper[len(xs) - 1 - xs.index(c)] for c in reversed(CUTS)]
+    cutsL = [lower[xs.index(c)] for c in CUTS]
+    curves = (list(geo.splitCurve(geo.addSpline(upper), cutsU))
+              + list(geo.splitCurve(geo.addSpline(lower), cutsL))
+              + [geo.addLine(lower[-1], upper[0])])
+    points = [upper[0]] + cutsU + [upper[-1]] + cutsL + [lower[-1]]
+    return curves, points
+
+
+def outwardNormals(surfaces):
+    """Unit outward normals at the wing's mesh nodes (angle-weighted mean of
+    the triangles' normals), as a list of vector triangles (gmsh "VT" list
+    data). Nodes of the root section get normals in the plane y = 0, so that
+    the prisms' side faces stay in the symmetry plane."""
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    xyz = {int(t): coords[3*i:3*i + 3] for i, t in enumerate(tags)}
+    normal = {}
+    tris = []
+    for s in surfaces:
+        _, _, nodes = gmsh.model.mesh.getElements(2, s)
+        ts = [[int(t) for t in nodes[0][3*i:3*i + 3]] for i in range(len(nodes[0])//3)]
+        ns = []
+        vote = 0.0
+        for a, b, c in ts:
+            pa, pb, pc = xyz[a], xyz[b], xyz[c]
+            u = [pb[k] - pa[k] for k in range(3)]
+            v = [pc[k] - pa[k] for k in range(3)]
+            n = [u[1]*v[2] - u[2]*v[1], u[2]*v[0] - u[0]*v[2], u[0]*v[1] - u[1]*v[0]]
+            # outward: away from the chord line (tip cap: +y)
+            g = [(pa[k] + pb[k] + pc[k])/3 for k in range(3)]
+            xc = min(max(g[0], 0.1*CHORD), 0.9*CHORD)   # (the shear: < 2e-6 m)
+            out = [g[0] - xc, 0.0, g[2]]
+            if g[1] > SEMI_SPAN - 1e-9:
+                out = [0.0, 1.0, 0.0]
+            vote += sum(n[k]*out[k] for k in range(3))
+            ns.append(((a, b, c), n))
+        sign = 1.0 if vote > 0 else -1.0
+        for tri, n in ns:
+            tris.append(tri)
+            mn = math.sqrt(sum(c*c for c in n))
+            for i, t in enumerate(tri):
+                # angle-weighted: the bisector at the trailing edge's corners
+                p0, p1, p2 = (xyz[tri[(i + j) % 3]] for j in range(3))
+                u = [p1[k] - p0[k] for k in range(3)]
+                v = [p2[k] - p0[k] for k in range(3)]
+                cosA = sum(u[k]*v[k] for k in range(3))/math.sqrt(
+                    sum(c*c for c in u)*sum(c*c for c in v))
+                w = math.acos(max(-1.0, min(1.0, cosA)))/mn
+                m = normal.setdefault(t, [0.0, 0.0, 0.0])
+                for k in range(3):
+                    m[k] += sign*w*n[k]
+    for t, n in normal.items():
+        if abs(xyz[t][1]) < 1e-9:
+            n[1] = 0.0
+        m = math.sqrt(sum(c*c for c in n))
+        normal[t] = [c/m for c in n]
+    data = []
+    for tri in tris:
+        data += [xyz[t][0] for t in tri] + [xyz[t][1] for t in tri] + [xyz[t][2] for t in tri]
+        for t in tri:
+            data += normal[t]
+    return len(tris), data
+
+
+def checkLayers(surfaces, layers, nl):
+    """Fail unless every wing triangle has its nl prisms (gmsh writes a
+    collapsed prism as a pyramid) and no node is doubled."""
+    nTri = sum(len(gmsh.model.mesh.getElementsByType(2, s)[0]) for s in surfaces)
+    nPrism = sum(len(gmsh.model.mesh.getElementsByType(6, v)[0]) for v in layers)
+    _, coords, _ = gmsh.model.mesh.getNodes()
+    nDup = len(coords)//3 - len({tuple(coords[i:i + 3]) for i in range(0, len(coords), 3)})
+    if nPrism != nl*nTri or nDup:
+        sys.exit("flapMesh: %d prisms for %d triangles x %d layers, %d doubled nodes"
+                 % (nPrism, nTri, nl, nDup))
+
+
+def unshear():
+    """x -= SHEAR*y at every node (y unchanged: the root stays at y = 0)."""
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    for i, t in enumerate(tags):
+        x, y, z = coords[3*i:3*i + 3]
+        gmsh.model.mesh.setNode(t, [x - SHEAR*y, y, z], [])
+
+
+def threshold(field, distance, sizeMin, sizeMax, distMin, distMax, stop):
+    """A Threshold field on the Distance field distance."""
+    f = field.add("Threshold")
+    field.setNumber(f, "InField", distance)
+    field.setNumber(f, "SizeMin", sizeMin)
+    field.setNumber(f, "SizeMax", sizeMax)
+    field.setNumber(f, "DistMin", distMin)
+    field.setNumber(f, "DistMax", distMax)
+    field.setNumber(f, "StopAtDistMax", stop)
+    return f
+
+
+def distance(field, curves, n):
+    """A Distance field to the curves (n points per curve)."""
+    f = field.add("Distance")
+    field.setNumbers(f, "EdgesList", curves)
+    field.setNumber(f, "NumPointsPerCurve", n)
+    return f
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("output", nargs="?", default="flap.msh")
+    ap.add_argument("--coarse", action="store_true",
+                    help="the integration test's mesh (< 30k cells)")
+    ap.add_argument("--size-wing", type=float, help="surface size on the wing [m]")
+    ap.add_argument("--size-edge", type=float,
+                    help="size at the leading and trailing edges and the tip [m]")
+    ap.add_argument("--size-hinge", type=float,
+                    help="size on the hinge strip and at the cuts [m]")
+    ap.add_argument("--size-far", type=float, help="size at the far field [m]")
+    ap.add_argument("--layers", type=int, help="prism layers")
+    ap.add_argument("--first-height", type=float, help="first layer height [m]")
+    ap.add_argument("--growth", type=float, help="layer growth ratio")
+    ap.add_argument("--thickness", type=float, default=0.12,
+                    help="section thickness / chord")
+    ap.add_argument("--box", type=float, nargs=4, default=(-5.0, 8.0, 5.0, 5.0),
+                    metavar=("X0", "X1", "Y1", "Z"),
+                    help="the far-field box: x in [X0, X1], y in [0, Y1], z in [-Z, Z]"
+                         " (default -5 8 5 5 m)")
+    a = ap.parse_args()
+
+    level = "coarse" if a.coarse else "default"
+    defaults = {  # size-wing size-edge size-hinge size-far layers first-height growth
+        "coarse":  (0.2, 0.03, 0.033, 2.0, 3, 2e-4, 1.3),
+        "default": (0.08, 0.012, 0.016, 0.8, 6, 2e-4, 1.3),
+    }[level]
+    hw = a.size_wing or defaults[0]
+    he = a.size_edge or defaults[1]
+    hh = a.size_hinge or defaults[2]
+    hf = a.size_far or defaults[3]
+    nl = a.layers or defaults[4]
+    h1 = a.first_height or defaults[5]
+    growth = a.growth or defaults[6]
+    heights = []
+    h = 0.0
+    for i in range(nl):
+        h += h1*growth**i
+        heights.append(h)
+
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 1)
+    gmsh.model.add("flap_naca0012")
+
+    # Wing (built-in kernel, which the boundary-layer extrusion needs): ruled
+    # surfaces between the root and tip sections, one per section curve (the
+    # front, hinge and flap parts of the upper and lower surfaces, the blunt
+    # trailing edge's base); the flat tip cap in three plane pieces, cut by
+    # straight lines at x = 0.70 and 0.80.
+    geo = gmsh.model.geo
+    rc, rp = section(geo, 0.0, a.thickness, 60)
+    tc, tp = section(geo, SEMI_SPAN, a.thickness, 60)
+    span = [geo.addLine(r, t) for r, t in zip(rp, tp)]
+    sides = [geo.addSurfaceFilling([geo.addCurveLoop(
+        [rc[i], span[(i + 1) % 7], -tc[i], -span[i]])]) for i in range(7)]
+    cut7 = geo.addLine(tp[2], tp[4])         # the tip's cuts, upper -> lower
+    cut8 = geo.addLine(tp[1], tp[5])
+    capFront = geo.addPlaneSurface([geo.addCurveLoop([tc[2], tc[3], -cut7])])
+    capHinge = geo.addPlaneSurface([geo.addCurveLoop([tc[1], cut7, tc[4], -cut8])])
+    capFlap = geo.addPlaneSurface([geo.addCurveLoop([tc[0], cut8, tc[5], tc[6]])])
+    patches = {"wing": [sides[2], sides[3], capFront],
+               "hinge": [sides[1], sides[4], capHinge],
+               "flap": [sides[0], sides[5], sides[6], capFlap]}
+    wing = [s for p in ("wing", "hinge", "flap") for s in patches[p]]
+    geo.synchronize()
+    eps = 1e-6
+
+    # Sizes: fine along the leading and trailing edges and the tip, and on
+    # the hinge strip (every point of it within 0.05 m of a cut), graded to
+    # the wing's size, then to the far field's
+    field = gmsh.model.mesh.field
+    edges = [span[3], span[0], span[6]] + tc          # LE, TE corners, tip
+    cuts = [span[1], span[2], span[4], span[5], cut7, cut8]
+    tEdge = threshold(field, distance(field, edges, 400), he, hw, 0.005, 0.08, 1)
+    tCut = threshold(field, distance(field, cuts, 400), hh, hw, 0.05,
+                     0.05 + 1.5*(hw - hh), 1)
+    # hw to hf over 3 m from the wing's bounding box (a MathEval: gmsh 4.8's
+    # Distance field to surfaces takes seconds to build)
+    tWing = field.add("MathEval")
+    field.setString(tWing, "F", "min(%g, %g + %g*max(0, sqrt(max(0, max(-x, x - %g))^2"
+                    " + max(0, y - %g)^2 + max(0, abs(z) - %g)^2) - 0.02))"
+                    % (hf, hw, (hf - hw)/2.98, CHORD, SEMI_SPAN, 0.6*a.thickness*CHORD))
+    fMin = field.add("Min")
+    field.setNumbers(fMin, "FieldsList", [tEdge, tCut, tWing])
+    field.setAsBackgroundMesh(fMin)
+    gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
+    gmsh.option.setNumber("Mesh.Algorithm", 6)
+    gmsh.option.setNumber("Mesh.Algorithm3D", 1)
+
+    # Surface mesh of the wing, then the prism layers along our own normals
+    # (a vector view: the root nodes march in the symmetry plane; list data,
+    # which outlives the re-meshing of the wing by generate(3), which gives
+    # the same surface mesh)
+    gmsh.model.mesh.generate(2)
+    view = gmsh.view.add("normals")
+    gmsh.view.addListData(view, "VT", *outwardNormals(wing))
+    ext = gmsh.model.geo.extrudeBoundaryLayer(
+        [(2, t) for t in wing], [1]*nl, heights, True,
+        viewIndex=gmsh.view.getIndex(view))
+    top = [ext[i - 1] for i in range(1, len(ext)) if ext[i][0] == 3]
+    layers = [t for d, t in ext if d == 3]
+    gmsh.model.geo.synchronize()
+
+    # Box: x in [x0, x1], y in [0, y1], z in [-z, z]; the root plane has the
+    # hole of the prism layers' outer section
+    x0, x1, y1, z = a.box
+    hole = geo.addCurveLoop([c[1] for c in gmsh.model.getBoundary(top)])
+    p = [geo.addPoint(x + SHEAR*y, y, zz, hf) for y in (0.0, y1)
+         for (x, zz) in ((x0, -z), (x1, -z), (x1, z), (x0, z))]
+    l0 = [geo.addLine(p[i], p[(i + 1) % 4]) for i in range(4)]
+    l1 = [geo.addLine(p[4 + i], p[4 + (i + 1) % 4]) for i in range(4)]
+    lv = [geo.addLine(p[i], p[4 + i]) for i in range(4)]
+    sym = geo.addPlaneSurface([geo.addCurveLoop(l0), hole])
+    far = [geo.addPlaneSurface([geo.addCurveLoop(l1)])]
+    for i in range(4):
+        j = (i + 1) % 4
+        far.append(geo.addPlaneSurface([geo.addCurveLoop([l0[i], lv[j], -l1[i], -lv[i]])]))
+    shell = geo.addSurfaceLoop([t for d, t in top] + [sym] + far)
+    fluid = geo.addVolume([shell])
+    geo.synchronize()
+
+    gmsh.model.mesh.generate(3)
+    checkLayers(wing, layers, nl)
+    unshear()
+
+    # The prisms' side faces on the root plane belong to the symmetry patch
+    # (the extruded entities' extents are known once meshed)
+    rootSides = [t for d, t in ext if d == 2 and (d, t) not in top
+                 and gmsh.model.getBoundingBox(2, t)[4] < eps]
+    groups = [(name, 2, patches[name]) for name in ("wing", "hinge", "flap")]
+    groups += [("symmetry", 2, [sym] + rootSides), ("farfield", 2, far),
+               ("fluid", 3, layers + [fluid])]
+    for name, dim, tags in groups:
+        gmsh.model.setPhysicalName(dim, gmsh.model.addPhysicalGroup(dim, tags), name)
+    gmsh.option.setNumber("Mesh.MshFileVersion", 2.2)
+    gmsh.write(a.output)
+
+    # (the points of the cells: gmsh's model also holds some unused nodes)
+    _, _, cellNodes = gmsh.model.mesh.getElements(3)
+    nPoints = len(set().union(*(set(n) for n in cellNodes)))
+    nPrism, nTet = (len(gmsh.model.mesh.getElementsByType(t)[0]) for t in (6, 4))
+    print("flapMesh: %s mesh, %d points, %d cells (%d prisms + %d tetrahedra), wing %g/%g m,"
+          " hinge %g m, far %g m, %d layers, first height %g m, total %g m, box %s;"
+          " hinge line x = %g, z = 0"
+          % (level, nPoints, nPrism + nTet, nPrism, nTet, hw, he, hh, hf, nl, heights[0],
+             heights[-1], " ".join("%g" % v for v in a.box), HINGE_X))
+    gmsh.finalize()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
