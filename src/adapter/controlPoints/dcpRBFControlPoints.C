@@ -228,8 +228,7 @@ Foam::scalar Foam::dcpRBFControlPoints::boundaryError
 {
     const scalar err =
         block_.largestMovingError(set_.evaluator(), d, storageBudget()/16, worst);
-    const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
-    return dMax > 0 ? err/dMax : 0;
+    return dcprbf::relativeToLargest(err, d, settings_.kernel().radius());
 }
 
 

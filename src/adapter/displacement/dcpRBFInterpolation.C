@@ -208,8 +208,7 @@ Foam::scalar Foam::dcpRBFInterpolation::correct
         if (boundaryPoints_.moving()[b0 + i]) err = max(err, error.row(i).norm());
     }
     reduce(err, maxOp<scalar>());
-    const scalar dMax = d.rows() ? d.rowwise().norm().maxCoeff() : 0;
-    return dMax > 0 ? err/dMax : 0;
+    return dcprbf::relativeToLargest(err, d, settings_.kernel().radius());
 }
 
 
