@@ -8,7 +8,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bumpRun.H"
-#include "dcpRBFErrorGuidedSettings.H"
+#include "dcpRBFErrorGuidedSwaps.H"
 
 #include <gtest/gtest.h>
 #include <cmath>

@@ -18,19 +18,6 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-template<class Type>
-Foam::List<Foam::List<Type>> Foam::dcpRBFBoundaryPoints::allGather
-(
-    const List<Type>& local
-)
-{
-    List<List<Type>> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = local;
-    dcpRBFCompat::allGatherList(all);
-    return all;
-}
-
-
 void Foam::dcpRBFBoundaryPoints::markPoints
 (
     const polyMesh& mesh,
@@ -114,12 +101,9 @@ void Foam::dcpRBFBoundaryPoints::checkDistinct
                 }
             }
         }
-        List<wordList> all(Pstream::nProcs());
-        all[Pstream::myProcNo()] = names;
-        dcpRBFCompat::allGatherList(all);
         wordList merged;
         string text;
-        for (const wordList& l : all)
+        for (const wordList& l : dcpRBFCompat::allGather<word>(names))
         {
             for (const word& w : l)
             {
@@ -144,31 +128,13 @@ void Foam::dcpRBFBoundaryPoints::checkDistinct
 }
 
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::dcpRBFBoundaryPoints::dcpRBFBoundaryPoints
+void Foam::dcpRBFBoundaryPoints::selectLocal
 (
-    const polyMesh& mesh,
-    const dcpRBFPlaneProjection& projection,
-    const labelList& movingPatchIDs,
-    const labelList& staticPatchIDs,
     const pointField& points0,
-    const dcpRBFRegion* region
+    DynamicList<bool>& localMoving
 )
-:
-    projection_(projection)
 {
-    // (not "region ? *region : wholeMesh(mesh)", which copies the region)
-    if (region)
-    {
-        markPoints(mesh, movingPatchIDs, staticPatchIDs, *region);
-    }
-    else
-    {
-        markPoints(mesh, movingPatchIDs, staticPatchIDs, dcpRBFRegion::wholeMesh(mesh));
-    }
     DynamicList<label> labels;
-    DynamicList<bool> localMoving;
     forAll(kind_, pointi)
     {
         const pointKind k = kind_[pointi];
@@ -183,28 +149,15 @@ Foam::dcpRBFBoundaryPoints::dcpRBFBoundaryPoints
         }
     }
     localPoints_.transfer(labels);
+}
 
-    // All processors' candidates, concatenated in processor order
-    const List<List<point>> allPoints
-    (
-        allGather<point>(pointField(points0, localPoints_))
-    );
-    const List<List<bool>> allMoving(allGather<bool>(localMoving));
 
-    DynamicList<FixedList<double, 3>> coords;
-    DynamicList<bool> isMoving;
-    forAll(allPoints, proci)
-    {
-        forAll(allPoints[proci], i)
-        {
-            FixedList<double, 3> c;
-            projection_.toCore(allPoints[proci][i], c.data());
-            coords.append(c);
-            isMoving.append(allMoving[proci][i]);
-        }
-    }
-
-    // Canonical order: lexicographic in core coordinates, duplicates merged
+void Foam::dcpRBFBoundaryPoints::numberCanonically
+(
+    const DynamicList<FixedList<double, 3>>& coords,
+    const DynamicList<bool>& isMoving
+)
+{
     std::vector<label> order(coords.size());
     std::iota(order.begin(), order.end(), 0);
     const auto less = [&](label a, label b)
@@ -238,6 +191,56 @@ Foam::dcpRBFBoundaryPoints::dcpRBFBoundaryPoints
     {
         moving_[concatToGlobal_[k]] = moving_[concatToGlobal_[k]] || isMoving[k];
     }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFBoundaryPoints::dcpRBFBoundaryPoints
+(
+    const polyMesh& mesh,
+    const dcpRBFPlaneProjection& projection,
+    const labelList& movingPatchIDs,
+    const labelList& staticPatchIDs,
+    const pointField& points0,
+    const dcpRBFRegion* region
+)
+:
+    projection_(projection)
+{
+    // (not "region ? *region : wholeMesh(mesh)", which copies the region)
+    if (region)
+    {
+        markPoints(mesh, movingPatchIDs, staticPatchIDs, *region);
+    }
+    else
+    {
+        markPoints(mesh, movingPatchIDs, staticPatchIDs, dcpRBFRegion::wholeMesh(mesh));
+    }
+    DynamicList<bool> localMoving;
+    selectLocal(points0, localMoving);
+
+    // All processors' candidates, concatenated in processor order
+    const List<List<point>> allPoints
+    (
+        dcpRBFCompat::allGather<point>(pointField(points0, localPoints_))
+    );
+    const List<List<bool>> allMoving(dcpRBFCompat::allGather<bool>(localMoving));
+
+    DynamicList<FixedList<double, 3>> coords;
+    DynamicList<bool> isMoving;
+    forAll(allPoints, proci)
+    {
+        forAll(allPoints[proci], i)
+        {
+            FixedList<double, 3> c;
+            projection_.toCore(allPoints[proci][i], c.data());
+            coords.append(c);
+            isMoving.append(allMoving[proci][i]);
+        }
+    }
+
+    numberCanonically(coords, isMoving);
     checkDistinct(mesh, movingPatchIDs, staticPatchIDs);
 }
 
@@ -294,7 +297,7 @@ dcprbf::Values Foam::dcpRBFBoundaryPoints::gather
             local[i] = prescribed[localPoints_[i]];
         }
     }
-    const List<List<vector>> all(allGather<vector>(local));
+    const List<List<vector>> all(dcpRBFCompat::allGather<vector>(local));
 
     dcprbf::Values values(dcprbf::Values::Zero(size(), 3));
     label k = 0;

@@ -23,9 +23,8 @@ Foam::labelList Foam::dcpRBFSlidingWalls::slidingPatches
     const labelList& staticPatchIDs
 )
 {
-    // the patches in neither list whose condition lets the points slide
-    // (slip, fixedNormalSlip, symmetry, symmetryPlane); the same list on
-    // every processor (processor patches are coupled, not of these)
+    // (the same list on every processor: processor patches are coupled,
+    // not of these)
     const pointVectorField::Boundary& bf = displacement.boundaryField();
     DynamicList<label> ids;
     forAll(bf, patchi)
@@ -44,17 +43,13 @@ Foam::labelList Foam::dcpRBFSlidingWalls::slidingPatches
 }
 
 
-Foam::List<Foam::labelList> Foam::dcpRBFSlidingWalls::group
+Foam::List<Foam::Map<Foam::vector>> Foam::dcpRBFSlidingWalls::pointNormals
 (
     const polyMesh& mesh,
     const labelList& ids,
     const pointField& points0
 )
 {
-    // Per sliding patch its reference point normals at every mesh point
-    // (zero off the patch), summed over the processors holding its faces:
-    // a processor holding a point of a patch without the patch's faces
-    // sees it too
     // (kept per patch for its points only: one field of every point at
     // a time)
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
@@ -74,6 +69,18 @@ Foam::List<Foam::labelList> Foam::dcpRBFSlidingWalls::group
             if (magSqr(n[pointi]) > 0) normals[a].insert(pointi, n[pointi]);
         }
     }
+    return normals;
+}
+
+
+Foam::List<Foam::labelList> Foam::dcpRBFSlidingWalls::group
+(
+    const polyMesh& mesh,
+    const labelList& ids,
+    const pointField& points0
+)
+{
+    const List<Map<vector>> normals(pointNormals(mesh, ids, points0));
 
     // per sliding patch its wall (the first patch of the wall): patches
     // sharing a point whose normals agree there, on every processor

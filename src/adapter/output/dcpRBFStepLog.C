@@ -80,17 +80,14 @@ void Foam::dcpRBFStepLog::split(scalar times::*part)
 }
 
 
-void Foam::dcpRBFStepLog::write
+void Foam::dcpRBFStepLog::writeInfo
 (
     const dcpRBFStepState& r,
-    const dcpRBFQualityRegion::summary* quality
-)
+    const dcpRBFQualityRegion::summary& q,
+    const bool measured
+) const
 {
     const times& t = times_;
-    // the figures of no cell checked if the step measured none
-    const dcpRBFQualityRegion::summary none;
-    const dcpRBFQualityRegion::summary& q = quality ? *quality : none;
-
     // 4 significant digits for the qualities and the error, 3 for the
     // times in ms, whatever the case's writePrecision
     OStringStream line;
@@ -112,7 +109,7 @@ void Foam::dcpRBFStepLog::write
     line<< (r.rescue ? ", rescue" : "") << "), quality min "
         << q.checkedMin << " mean " << q.checkedMean << " (" << q.nChecked
         << " cells checked";
-    if (quality && q.nMeasured < q.nCells)
+    if (measured && q.nMeasured < q.nCells)
     {
         // qualityScan lowest: the region's cells measured exactly
         line<< ", " << q.nMeasured << " of " << q.nCells << " measured";
@@ -130,11 +127,16 @@ void Foam::dcpRBFStepLog::write
         << " guard " << ms(t.guard).c_str()
         << " points " << ms(t.points).c_str();
     Info<< line.str().c_str() << endl;
+}
 
-    if (!Pstream::master())
-    {
-        return;
-    }
+
+void Foam::dcpRBFStepLog::writeRow
+(
+    const dcpRBFStepState& r,
+    const dcpRBFQualityRegion::summary& q
+)
+{
+    const times& t = times_;
     if (!file_.valid())
     {
         const fileName dir
@@ -160,6 +162,23 @@ void Foam::dcpRBFStepLog::write
         << t.select << ' ' << t.interpolate << ' ' << t.guard
         << ' ' << r.nUndone << ' ' << t.points << ' ' << q.checkedInverted
         << ' ' << t.measure << endl;
+}
+
+
+void Foam::dcpRBFStepLog::write
+(
+    const dcpRBFStepState& r,
+    const dcpRBFQualityRegion::summary* quality
+)
+{
+    // the figures of no cell checked if the step measured none
+    const dcpRBFQualityRegion::summary none;
+    const dcpRBFQualityRegion::summary& q = quality ? *quality : none;
+    writeInfo(r, q, quality);
+    if (Pstream::master())
+    {
+        writeRow(r, q);
+    }
 }
 
 

@@ -50,9 +50,10 @@ dcprbf::Points Foam::dcpRBFQualityRegion::checkSources
             }
         }
     }
-    List<List<FixedList<scalar, 3>>> all(Pstream::nProcs());
-    all[Pstream::myProcNo()].transfer(local);
-    dcpRBFCompat::allGatherList(all);
+    const List<List<FixedList<scalar, 3>>> all
+    (
+        dcpRBFCompat::allGather<FixedList<scalar, 3>>(local)
+    );
 
     const dcprbf::Points& candidates = boundaryPoints.points();
     label n = candidates.rows();
@@ -79,9 +80,10 @@ Foam::dcpRBFRankedCell Foam::dcpRBFQualityRegion::globalLowest
     // Gathered as lists of scalars: newer versions gather a list of
     // FixedLists (contiguous) with memmove, a -Wclass-memaccess warning; and
     // reduce of a FixedList is elementwise, not the lexicographic order here
-    List<scalarList> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = dcpRBFCompat::makeList<scalar>(local);
-    dcpRBFCompat::allGatherList(all);
+    const List<scalarList> all
+    (
+        dcpRBFCompat::allGather(dcpRBFCompat::makeList<scalar>(local))
+    );
     dcpRBFRankedCell lowest(local);
     for (const scalarList& c : all)
     {

@@ -176,9 +176,10 @@ Foam::List<Foam::dcpRBFRankedCell> globalFirst
     using Foam::dcpRBFRankedCell;
     std::vector<dcpRBFRankedCell> local;
     for (const label i : at) local.push_back(order.ranked(i));
-    Foam::List<Foam::List<dcpRBFRankedCell>> all(Foam::Pstream::nProcs());
-    all[Foam::Pstream::myProcNo()] = Foam::dcpRBFCompat::makeList<dcpRBFRankedCell>(local);
-    Foam::dcpRBFCompat::allGatherList(all);
+    const Foam::List<Foam::List<dcpRBFRankedCell>> all
+    (
+        Foam::dcpRBFCompat::allGather(Foam::dcpRBFCompat::makeList<dcpRBFRankedCell>(local))
+    );
     std::vector<dcpRBFRankedCell> cells;
     for (const auto& l : all) cells.insert(cells.end(), l.begin(), l.end());
     if (lowest)

@@ -339,22 +339,4 @@ Foam::wordList Foam::dcpRBFKeywords::names(const word& dictionary)
 }
 
 
-Foam::wordList Foam::dcpRBFKeywords::namesOnly
-(
-    const word& dictionary,
-    const dcpRBFKeyword::scope s
-)
-{
-    DynamicList<word> list;
-    for (const dcpRBFKeyword& k : all())
-    {
-        if (dictionary == k.dictionary && k.allowedWith >= s)
-        {
-            list.append(k.name);
-        }
-    }
-    return wordList(list);
-}
-
-
 // ************************************************************************* //

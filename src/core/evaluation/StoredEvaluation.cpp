@@ -51,6 +51,92 @@ StoredEvaluation::StoredEvaluation
 {}
 
 
+void StoredEvaluation::fillDense(const Points& c, Slot& s) const
+{
+    const std::ptrdiff_t n = x_.rows();
+    s.dense.resize(n, c.rows());
+    kernel_.visit([&](const auto& phi)
+    {
+        #pragma omp parallel for schedule(static)
+        for (std::ptrdiff_t i = 0; i < n; ++i)
+        {
+            for (Eigen::Index j = 0; j < c.rows(); ++j)
+            {
+                s.dense(i, j) = phi.ofSquared((x_.row(i) - c.row(j)).squaredNorm());
+            }
+        }
+    });
+}
+
+
+bool StoredEvaluation::buildCompact
+(
+    const Points& c,
+    const std::size_t budget,
+    Slot& s
+) const
+{
+    const std::ptrdiff_t n = x_.rows();
+    // two passes over a tree of the centres: count, then fill
+    const PointTree tree(c);
+    const double R = kernel_.radius();
+    std::vector<std::size_t> count(n + 1, 0);
+    #pragma omp parallel for schedule(dynamic, 256)
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+    {
+        std::size_t k = 0;
+        tree.forEachWithin(x_.row(i).data(), R, [&](std::size_t, double) { ++k; });
+        count[i + 1] = k;
+    }
+    std::partial_sum(count.begin(), count.end(), count.begin());
+    const std::size_t nnz = count.back();
+    // columns in 8 bits up to 256 centres, 16 up to 65536, else 32
+    const int indexBytes = c.rows() <= 256 ? 1 : c.rows() <= 65536 ? 2 : 4;
+    if ((n + 1)*sizeof(std::size_t) + nnz*(indexBytes + sizeof(double)) > budget)
+    {
+        return false;
+    }
+    s.outer = std::move(count);
+    // with room: the other slot's merges fill this storage later (if
+    // half the budget holds it: the other slot's matrix is to fit
+    // beside it, not to be refused for this one's room)
+    const std::size_t extra = room(n, nnz, indexBytes, budget/2);
+    if (indexBytes == 1) s.inner8.reserve(nnz + extra);
+    else if (indexBytes == 2) s.inner.reserve(nnz + extra);
+    else s.inner32.reserve(nnz + extra);
+    s.values.reserve(nnz + extra);
+    s.inner8.resize(indexBytes == 1 ? nnz : 0);
+    s.inner.resize(indexBytes == 2 ? nnz : 0);
+    s.inner32.resize(indexBytes == 4 ? nnz : 0);
+    s.values.resize(nnz);
+    kernel_.visit([&](const auto& phi)
+    {
+        #pragma omp parallel for schedule(dynamic, 256)
+        for (std::ptrdiff_t i = 0; i < n; ++i)
+        {
+            std::size_t k = s.outer[i];
+            tree.forEachWithin(x_.row(i).data(), R, [&](std::size_t j, double d2)
+            {
+                if (indexBytes == 1)
+                {
+                    s.inner8[k] = std::uint8_t(j);
+                }
+                else if (indexBytes == 2)
+                {
+                    s.inner[k] = std::uint16_t(j);
+                }
+                else
+                {
+                    s.inner32[k] = int(j);
+                }
+                s.values[k++] = phi.ofSquared(d2);
+            });
+        }
+    });
+    return true;
+}
+
+
 bool StoredEvaluation::build(const Points& c, std::size_t budget, Slot& s) const
 {
     s = Slot();
@@ -58,82 +144,16 @@ bool StoredEvaluation::build(const Points& c, std::size_t budget, Slot& s) const
     if (!kernel_.compact())
     {
         if (std::size_t(n)*c.rows()*sizeof(double) > budget) return false;
-        s.dense.resize(n, c.rows());
-        kernel_.visit([&](const auto& phi)
-        {
-            #pragma omp parallel for schedule(static)
-            for (std::ptrdiff_t i = 0; i < n; ++i)
-            {
-                for (Eigen::Index j = 0; j < c.rows(); ++j)
-                {
-                    s.dense(i, j) = phi.ofSquared((x_.row(i) - c.row(j)).squaredNorm());
-                }
-            }
-        });
+        fillDense(c, s);
     }
     else if ((n + 1)*sizeof(std::size_t) > budget)
     {
         // not even the row starts fit: no count pass
         return false;
     }
-    else
+    else if (!buildCompact(c, budget, s))
     {
-        // two passes over a tree of the centres: count, then fill
-        const PointTree tree(c);
-        const double R = kernel_.radius();
-        std::vector<std::size_t> count(n + 1, 0);
-        #pragma omp parallel for schedule(dynamic, 256)
-        for (std::ptrdiff_t i = 0; i < n; ++i)
-        {
-            std::size_t k = 0;
-            tree.forEachWithin(x_.row(i).data(), R, [&](std::size_t, double) { ++k; });
-            count[i + 1] = k;
-        }
-        std::partial_sum(count.begin(), count.end(), count.begin());
-        const std::size_t nnz = count.back();
-        // columns in 8 bits up to 256 centres, 16 up to 65536, else 32
-        const int indexBytes = c.rows() <= 256 ? 1 : c.rows() <= 65536 ? 2 : 4;
-        if ((n + 1)*sizeof(std::size_t) + nnz*(indexBytes + sizeof(double)) > budget)
-        {
-            return false;
-        }
-        s.outer = std::move(count);
-        // with room: the other slot's merges fill this storage later (if
-        // half the budget holds it: the other slot's matrix is to fit
-        // beside it, not to be refused for this one's room)
-        const std::size_t extra = room(n, nnz, indexBytes, budget/2);
-        if (indexBytes == 1) s.inner8.reserve(nnz + extra);
-        else if (indexBytes == 2) s.inner.reserve(nnz + extra);
-        else s.inner32.reserve(nnz + extra);
-        s.values.reserve(nnz + extra);
-        s.inner8.resize(indexBytes == 1 ? nnz : 0);
-        s.inner.resize(indexBytes == 2 ? nnz : 0);
-        s.inner32.resize(indexBytes == 4 ? nnz : 0);
-        s.values.resize(nnz);
-        kernel_.visit([&](const auto& phi)
-        {
-            #pragma omp parallel for schedule(dynamic, 256)
-            for (std::ptrdiff_t i = 0; i < n; ++i)
-            {
-                std::size_t k = s.outer[i];
-                tree.forEachWithin(x_.row(i).data(), R, [&](std::size_t j, double d2)
-                {
-                    if (indexBytes == 1)
-                    {
-                        s.inner8[k] = std::uint8_t(j);
-                    }
-                    else if (indexBytes == 2)
-                    {
-                        s.inner[k] = std::uint16_t(j);
-                    }
-                    else
-                    {
-                        s.inner32[k] = int(j);
-                    }
-                    s.values[k++] = phi.ofSquared(d2);
-                });
-            }
-        });
+        return false;
     }
     s.centres = c;
     s.used = true;

@@ -201,6 +201,13 @@ private:
     //  would take more than budget bytes
     bool build(const Points& centres, std::size_t budget, Slot& s) const;
 
+    //- build()'s matrix of a global kernel: s.dense, sized and filled
+    void fillDense(const Points& centres, Slot& s) const;
+
+    //- build()'s matrix of a compact kernel: s's CSR storage counted, then
+    //  filled; false (s left empty) if it would take more than budget bytes
+    bool buildCompact(const Points& centres, std::size_t budget, Slot& s) const;
+
     //- Each centre's row in c, by its coordinates (a centre given twice:
     //  its first row)
     static std::map<std::array<double, 3>, int> rowsOf(const Points& c);

@@ -103,6 +103,67 @@ int activeColumns(const Values& alpha, const Eigen::MatrixX3d& beta)
     return alpha.col(2).isZero(0) && beta.col(2).isZero(0) ? 2 : 3;
 }
 
+//- v[0..C) = row i of the slot's compact matrix times a (alpha packed),
+//  by the width of its columns
+template<int C, class Slot>
+inline void compactRow(const Slot& s, const std::ptrdiff_t i, const double* a, double* v)
+{
+    const std::size_t k = s.outer[i], end = s.outer[i + 1];
+    if (!s.inner8.empty())
+    {
+        rowProduct<C>(k, end, s.values.data(), s.inner8.data(), a, v);
+    }
+    else if (!s.inner.empty())
+    {
+        rowProduct<C>(k, end, s.values.data(), s.inner.data(), a, v);
+    }
+    else
+    {
+        rowProduct<C>(k, end, s.values.data(), s.inner32.data(), a, v);
+    }
+}
+
+
+//- v += Q(x_i) beta: the constant (times 1, exactly), then the rest (qi:
+//  row i's L columns of Q after the ones, b: beta packed, P rows)
+template<int C>
+inline void addPolynomial
+(
+    const double* qi,
+    const int L,
+    const int P,
+    const double* b,
+    double* v
+)
+{
+    for (int q = 0; P > 0 && q < C; ++q) v[q] += b[q];
+    for (int p = 0; p < L; ++p)
+    {
+        for (int q = 0; q < C; ++q) v[q] += qi[p]*b[C*(p + 1) + q];
+    }
+}
+
+
+//- v += the patch's columns of row pi (those of this row, in the patch's
+//  order; none without pStart)
+template<int C>
+inline void addPatchColumns
+(
+    const std::uint32_t* pStart,
+    const std::ptrdiff_t pi,
+    const std::uint8_t* pEntry,
+    const double* pValue,
+    const double* patchWeights,
+    double* v
+)
+{
+    for (std::uint32_t k = pStart ? pStart[pi] : 0, end = pStart ? pStart[pi + 1] : 0; k < end; ++k)
+    {
+        const double* w = patchWeights + C*pEntry[k];
+        for (int q = 0; q < C; ++q) v[q] += pValue[k]*w[q];
+    }
+}
+
 } // namespace
 
 
@@ -165,34 +226,13 @@ void StoredEvaluation::product
         }
         else
         {
-            const std::size_t k = s.outer[i], end = s.outer[i + 1];
-            if (!s.inner8.empty())
-            {
-                rowProduct<C>(k, end, s.values.data(), s.inner8.data(), a.data(), v);
-            }
-            else if (!s.inner.empty())
-            {
-                rowProduct<C>(k, end, s.values.data(), s.inner.data(), a.data(), v);
-            }
-            else
-            {
-                rowProduct<C>(k, end, s.values.data(), s.inner32.data(), a.data(), v);
-            }
+            compactRow<C>(s, i, a.data(), v);
         }
-        // + Q(x_i) beta: the constant (times 1, exactly), then the rest
-        const double* qi = basis_.data() + std::ptrdiff_t(L)*i;
-        for (int q = 0; P > 0 && q < C; ++q) v[q] += b[q];
-        for (int p = 0; p < L; ++p)
-        {
-            for (int q = 0; q < C; ++q) v[q] += qi[p]*b[C*(p + 1) + q];
-        }
-        // + the patch's columns (those of this row, in the patch's order)
-        const std::ptrdiff_t pi = byPosition ? r : i;
-        for (std::uint32_t k = pStart ? pStart[pi] : 0, end = pStart ? pStart[pi + 1] : 0; k < end; ++k)
-        {
-            const double* w = patchWeights + C*pEntry[k];
-            for (int q = 0; q < C; ++q) v[q] += pValue[k]*w[q];
-        }
+        addPolynomial<C>(basis_.data() + std::ptrdiff_t(L)*i, L, P, b.data(), v);
+        addPatchColumns<C>
+        (
+            pStart, byPosition ? r : i, pEntry, pValue, patchWeights, v
+        );
         writeRow(scatter, i, v, out);
     }
 }

@@ -65,6 +65,100 @@ inline double leastSquaredSingularValueBelow
     return std::max(0.0, l*(1 - 1e-12));
 }
 
+
+//- T = S M^-1, S = sum (x - m)(X - m0)^T over the nv vertices (minv: M^-1's
+//  upper triangle by rows)
+inline void fitMap
+(
+    const double* x0,
+    const double* x,
+    const int* v,
+    const int nv,
+    const double m0[3],
+    const double m[3],
+    const double minv[6],
+    double T[3][3]
+)
+{
+    double S[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    for (int k = 0; k < nv; ++k)
+    {
+        const double* y0 = x0 + 3*std::size_t(v[k]);
+        const double* y = x + 3*std::size_t(v[k]);
+        const double X[3] = {y0[0] - m0[0], y0[1] - m0[1], y0[2] - m0[2]};
+        for (int i = 0; i < 3; ++i)
+        {
+            const double u = y[i] - m[i];
+            for (int j = 0; j < 3; ++j) S[i][j] += u*X[j];
+        }
+    }
+    const double Mi[3][3] =
+    {
+        {minv[0], minv[1], minv[2]},
+        {minv[1], minv[3], minv[4]},
+        {minv[2], minv[4], minv[5]}
+    };
+    for (int i = 0; i < 3; ++i)
+    {
+        for (int j = 0; j < 3; ++j)
+        {
+            T[i][j] = S[i][0]*Mi[0][j] + S[i][1]*Mi[1][j] + S[i][2]*Mi[2][j];
+        }
+    }
+}
+
+
+//- The largest squared residual of x - m against T (X - m0) over the nv
+//  vertices into r2, the largest |X - m0|^2 into l2
+inline void largestResidual
+(
+    const double* x0,
+    const double* x,
+    const int* v,
+    const int nv,
+    const double m0[3],
+    const double m[3],
+    const double T[3][3],
+    double& r2,
+    double& l2
+)
+{
+    r2 = 0;
+    l2 = 0;
+    for (int k = 0; k < nv; ++k)
+    {
+        const double* y0 = x0 + 3*std::size_t(v[k]);
+        const double* y = x + 3*std::size_t(v[k]);
+        const double X[3] = {y0[0] - m0[0], y0[1] - m0[1], y0[2] - m0[2]};
+        double e2 = 0;
+        for (int i = 0; i < 3; ++i)
+        {
+            const double e = (y[i] - m[i]) - (T[i][0]*X[0] + T[i][1]*X[1] + T[i][2]*X[2]);
+            e2 += e*e;
+        }
+        r2 = std::max(r2, e2);
+        l2 = std::max(l2, X[0]*X[0] + X[1]*X[1] + X[2]*X[2]);
+    }
+}
+
+
+//- |adj T|_F^2: the sum of T's 2 x 2 minors squared
+inline double adjugateSquared(const double T[3][3])
+{
+    double adj2 = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+        const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        for (int j = 0; j < 3; ++j)
+        {
+            const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const double minor = T[i1][j1]*T[i2][j2] - T[i1][j2]*T[i2][j1];
+            adj2 += minor*minor;
+        }
+    }
+    return adj2;
+}
+
 } // namespace
 
 
@@ -195,50 +289,13 @@ double CellQualityBound::lower
     mean(x0, v, nv, m0, big0);
     mean(x, v, nv, m, big);
 
-    // S = sum (x - m)(X - m0)^T, T = S M^-1
-    double S[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-    for (int k = 0; k < nv; ++k)
-    {
-        const double* y0 = x0 + 3*std::size_t(v[k]);
-        const double* y = x + 3*std::size_t(v[k]);
-        const double X[3] = {y0[0] - m0[0], y0[1] - m0[1], y0[2] - m0[2]};
-        for (int i = 0; i < 3; ++i)
-        {
-            const double u = y[i] - m[i];
-            for (int j = 0; j < 3; ++j) S[i][j] += u*X[j];
-        }
-    }
-    const double Mi[3][3] =
-    {
-        {minv_[0], minv_[1], minv_[2]},
-        {minv_[1], minv_[3], minv_[4]},
-        {minv_[2], minv_[4], minv_[5]}
-    };
+    // the map T fitted, x - m ~ T (X - m0)
     double T[3][3];
-    for (int i = 0; i < 3; ++i)
-    {
-        for (int j = 0; j < 3; ++j)
-        {
-            T[i][j] = S[i][0]*Mi[0][j] + S[i][1]*Mi[1][j] + S[i][2]*Mi[2][j];
-        }
-    }
+    fitMap(x0, x, v, nv, m0, m, minv_, T);
 
     // the largest residual, raised by the coordinates' round-off
-    double r2 = 0, l2 = 0;
-    for (int k = 0; k < nv; ++k)
-    {
-        const double* y0 = x0 + 3*std::size_t(v[k]);
-        const double* y = x + 3*std::size_t(v[k]);
-        const double X[3] = {y0[0] - m0[0], y0[1] - m0[1], y0[2] - m0[2]};
-        double e2 = 0;
-        for (int i = 0; i < 3; ++i)
-        {
-            const double e = (y[i] - m[i]) - (T[i][0]*X[0] + T[i][1]*X[1] + T[i][2]*X[2]);
-            e2 += e*e;
-        }
-        r2 = std::max(r2, e2);
-        l2 = std::max(l2, X[0]*X[0] + X[1]*X[1] + X[2]*X[2]);
-    }
+    double r2, l2;
+    largestResidual(x0, x, v, nv, m0, m, T, r2, l2);
     const double F2 =
         T[0][0]*T[0][0] + T[0][1]*T[0][1] + T[0][2]*T[0][2]
       + T[1][0]*T[1][0] + T[1][1]*T[1][1] + T[1][2]*T[1][2]
@@ -252,17 +309,7 @@ double CellQualityBound::lower
     // the least singular value of T from below (its 2 x 2 minors squared:
     // |adj T|_F^2), lowered by det T's round-off (u cond(T), cond(T) <=
     // |T|_F^2 / s)
-    double adj2 = 0;
-    for (int i = 0; i < 3; ++i)
-    {
-        const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-        for (int j = 0; j < 3; ++j)
-        {
-            const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            const double minor = T[i1][j1]*T[i2][j2] - T[i1][j2]*T[i2][j1];
-            adj2 += minor*minor;
-        }
-    }
+    const double adj2 = adjugateSquared(T);
     double s = std::sqrt(leastSquaredSingularValueBelow(F2, adj2, J*J, 4));
     s *= std::max(0.0, 1 - 1e-13*F2/std::max(s*s, 1e-300));
     return fromMap(J, F2, s, 2*std::sqrt(3.0)*r*kappa_, metric);

@@ -272,6 +272,10 @@ private:
     //- The bounds' set-up (bounds_, boundStart_, boundVertices_)
     void setUpBounds() const;
 
+    //- measureLowest's end: the cells not measured get their bounds
+    //  (lower_) in q; the number measured
+    std::size_t boundTheRest(const std::vector<char>& measured, double* q) const;
+
     //- Stored cell i's kappa: the largest |E^-1|_2 of its tetrahedra
     //  (CellQualityBound::inverseNorm)
     double kappa(std::size_t i) const;

@@ -76,6 +76,13 @@ double largestInverseNorm(const double* x0, const std::size_t nFaces, const Face
     return kappa;
 }
 
+//- The j-th lowest of values (reordered for it)
+inline double nthLowest(std::vector<double>& values, const std::size_t j)
+{
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(j), values.end());
+    return values[j];
+}
+
 } // namespace
 
 
@@ -204,14 +211,8 @@ std::size_t CellQualityScan::measureLowest
     const double* x = compact_.get();
 
     // the cells whose bound is below the k-th lowest bound (at least k)
-    std::vector<double> sorted;
-    const double t0 = [&]()
-    {
-        sorted = lower_;
-        const std::size_t j = std::max<std::size_t>(k, 1) - 1;
-        std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(j), sorted.end());
-        return sorted[j];
-    }();
+    std::vector<double> sorted = lower_;
+    const double t0 = nthLowest(sorted, std::max<std::size_t>(k, 1) - 1);
     std::vector<char> measured(n, 0);
     const auto measureWhere = [&](const auto& select)
     {
@@ -243,13 +244,20 @@ std::size_t CellQualityScan::measureLowest
         return n;
     }
     const std::size_t j = std::min(std::max<std::size_t>(k, 1), sorted.size()) - 1;
-    std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(j), sorted.end());
-    const double theta = std::max(sorted[j], 0.0) + 1e-9;
+    const double theta = std::max(nthLowest(sorted, j), 0.0) + 1e-9;
     measureWhere([&](const double b) { return b <= theta; });
+    return boundTheRest(measured, q);
+}
 
-    // the others: their bounds
+
+std::size_t CellQualityScan::boundTheRest
+(
+    const std::vector<char>& measured,
+    double* q
+) const
+{
     std::size_t nMeasured = 0;
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < size(); ++i)
     {
         if (measured[i])
         {

@@ -134,30 +134,14 @@ bool prismVertices
 }
 
 
-bool hexahedronVertices
-(
-    const std::size_t* start,
-    const std::size_t nFaces,
-    const int* points,
-    int v[8]
-)
+namespace
 {
-    if (nFaces != 6) return false;
-    for (std::size_t k = 0; k < 6; ++k)
-    {
-        if (start[k + 1] - start[k] != 4) return false;
-    }
-    const int* first = points + start[0];
-    for (int i = 0; i < 4; ++i)
-    {
-        v[i] = first[i];
-        for (int j = 0; j < i; ++j)
-        {
-            if (v[i] == v[j]) return false;
-        }
-    }
 
-    // the opposite face: the one sharing no point with the first
+//- The hexahedron's face opposite its first (the one sharing no point
+//  with it), null if none or more than one
+const int* oppositeFace(const std::size_t* start, const int* points)
+{
+    const int* first = points + start[0];
     const int* opposite = nullptr;
     for (std::size_t k = 1; k < 6; ++k)
     {
@@ -169,14 +153,24 @@ bool hexahedronVertices
         }
         if (!shares)
         {
-            if (opposite) return false;
+            if (opposite) return nullptr;
             opposite = f;
         }
     }
-    if (!opposite) return false;
+    return opposite;
+}
 
-    // each point of the first face joined by a side face's edge to exactly
-    // one point of the opposite face
+
+//- v[4..8): each point v[0..4) of the first face joined by a side face's
+//  edge to exactly one point of the opposite face, distinct; false if not
+bool joinOpposite
+(
+    const std::size_t* start,
+    const int* points,
+    const int* opposite,
+    int v[8]
+)
+{
     for (int i = 0; i < 4; ++i)
     {
         v[4 + i] = -1;
@@ -196,9 +190,20 @@ bool hexahedronVertices
             if (v[j] == v[4 + i]) return false;
         }
     }
+    return true;
+}
 
-    // the opposite face is the cycle v4 v5 v6 v7; side face i the cycle
-    // (v_i, v_i+1, v_i+5, v_i+4) for one edge (i, i+1) of the first each
+
+//- Is the opposite face the cycle v4 v5 v6 v7 and side face i the cycle
+//  (v_i, v_i+1, v_i+5, v_i+4) for one edge (i, i+1) of the first each?
+bool sidesAreCycles
+(
+    const std::size_t* start,
+    const int* points,
+    const int* opposite,
+    const int v[8]
+)
+{
     for (int i = 0; i < 4; ++i)
     {
         if (!joined(opposite, 4, v[4 + i], v[4 + (i + 1) % 4])) return false;
@@ -223,6 +228,39 @@ bool hexahedronVertices
         if (!found) return false;
     }
     return true;
+}
+
+} // namespace
+
+
+bool hexahedronVertices
+(
+    const std::size_t* start,
+    const std::size_t nFaces,
+    const int* points,
+    int v[8]
+)
+{
+    if (nFaces != 6) return false;
+    for (std::size_t k = 0; k < 6; ++k)
+    {
+        if (start[k + 1] - start[k] != 4) return false;
+    }
+    const int* first = points + start[0];
+    for (int i = 0; i < 4; ++i)
+    {
+        v[i] = first[i];
+        for (int j = 0; j < i; ++j)
+        {
+            if (v[i] == v[j]) return false;
+        }
+    }
+
+    const int* opposite = oppositeFace(start, points);
+    return
+        opposite
+     && joinOpposite(start, points, opposite, v)
+     && sidesAreCycles(start, points, opposite, v);
 }
 
 } // namespace dcprbf

@@ -315,6 +315,75 @@ GreedyResult GreedySelector::run
 }
 
 
+namespace
+{
+
+//- The points next added to the model: the seed at once (a dependent seed
+//  is an error); else one point at a time, one numerically dependent on
+//  those selected ending the selection (result.dependent; the model is
+//  unchanged by the refused point). The points added
+std::vector<Eigen::Index> addToModel
+(
+    GreedyModel& model,
+    const std::vector<Eigen::Index>& next,
+    const bool seeding,
+    GreedyResult& result
+)
+{
+    std::vector<Eigen::Index> added;
+    if (seeding)
+    {
+        model.add(next);
+        added = next;
+    }
+    else
+    {
+        for (const Eigen::Index i : next)
+        {
+            try
+            {
+                model.add({i});
+            }
+            catch (const Error&)
+            {
+                result.dependent = true;
+                break;
+            }
+            added.push_back(i);
+        }
+    }
+    return added;
+}
+
+
+//- The double-edged selection's second point: the worst unselected
+//  candidate whose error e points against the worst one's (global index
+//  worst; the error fetched from the rank holding it), -1 if none
+Eigen::Index opposingWorst
+(
+    const CandidateRows& rows,
+    const Values& e,
+    const Eigen::VectorXd& err2,
+    const std::vector<char>& selected,
+    const Eigen::Index worst
+)
+{
+    const Eigen::Index lw = rows.local(worst);
+    const Eigen::RowVector3d own =
+        lw >= 0 ? Eigen::RowVector3d(e.row(lw)) : Eigen::RowVector3d::Zero();
+    double fetched[9];
+    rows.fetch(worst, own.data(), 3, fetched);
+    const Eigen::RowVector3d ew(fetched[6], fetched[7], fetched[8]);
+    return globalArgmax(rows, err2, selected,
+        [&](Eigen::Index i)
+        {
+            return i != lw && e.row(i).dot(ew) < 0;
+        }).index;
+}
+
+} // namespace
+
+
 void GreedySelector::iterate
 (
     GreedyModel& model,
@@ -331,31 +400,8 @@ void GreedySelector::iterate
     std::vector<Eigen::Index> next = seed;
     for (bool seeding = true; ; seeding = false)
     {
-        // The seed at once (a dependent seed is an error); then one point
-        // at a time: one numerically dependent on those selected ends the
-        // selection (the model is unchanged by the refused point)
-        std::vector<Eigen::Index> added;
-        if (seeding)
-        {
-            model.add(next);
-            added = next;
-        }
-        else
-        {
-            for (const Eigen::Index i : next)
-            {
-                try
-                {
-                    model.add({i});
-                }
-                catch (const Error&)
-                {
-                    result.dependent = true;
-                    break;
-                }
-                added.push_back(i);
-            }
-        }
+        const std::vector<Eigen::Index> added =
+            addToModel(model, next, seeding, result);
         if (added.empty())
         {
             break;
@@ -386,19 +432,8 @@ void GreedySelector::iterate
         next.assign(1, worst.index);
         if (options_.doubleEdged && n + 2 <= options_.maxPoints)
         {
-            // the worst point's error, from the rank holding it
-            const Eigen::Index lw = rows.local(worst.index);
-            const Eigen::RowVector3d own =
-                lw >= 0 ? Eigen::RowVector3d(e.row(lw)) : Eigen::RowVector3d::Zero();
-            double fetched[9];
-            rows.fetch(worst.index, own.data(), 3, fetched);
-            const Eigen::RowVector3d ew(fetched[6], fetched[7], fetched[8]);
-            const CandidateRows::Best other = globalArgmax(rows, err2, selected,
-                [&](Eigen::Index i)
-                {
-                    return i != lw && e.row(i).dot(ew) < 0;
-                });
-            if (other.index >= 0) next.push_back(other.index);
+            const Eigen::Index other = opposingWorst(rows, e, err2, selected, worst.index);
+            if (other >= 0) next.push_back(other);
         }
     }
     model.coefficients(result.alpha, result.beta);

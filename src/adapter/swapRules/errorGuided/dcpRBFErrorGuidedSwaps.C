@@ -7,6 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFErrorGuidedSwaps.H"
+#include "dcpRBFDictReader.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -18,10 +19,52 @@ namespace Foam
     (
         dcpRBFSwapRule, dcpRBFErrorGuidedSwaps, context, errorGuided
     );
+
+    defineTypeNameAndDebug(dcpRBFErrorGuidedSettings, 0);
+    addToRunTimeSelectionTable
+    (
+        dcpRBFSwapRuleSettings, dcpRBFErrorGuidedSettings, dictionary
+    );
+}
+
+const Foam::Enum<Foam::dcpRBFErrorGuidedSettings::trialPoints>
+Foam::dcpRBFErrorGuidedSettings::trialPointsNames
+({
+    {trialPoints::window, "window"},
+    {trialPoints::all, "all"}
+});
+
+namespace
+{
+    //- A keyword of controlPoints
+    const Foam::dcpRBFKeyword& key(const char* name)
+    {
+        return Foam::dcpRBFKeywords::get("controlPoints", name);
+    }
+
+    //- The choices of trialPoints: the Enum's names
+    const Foam::dcpRBFKeyword::choicesFrom trialPointsChoices
+    (
+        "controlPoints", "trialPoints",
+        Foam::dcpRBFErrorGuidedSettings::trialPointsNames
+    );
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dcpRBFErrorGuidedSettings::dcpRBFErrorGuidedSettings
+(
+    const dictionary& dict
+)
+{
+    const dcpRBFDictReader r(dict);
+    swapBlendSteps = r.getLabel(key("swapBlendSteps"));
+    trialAt = r.getEnum(key("trialPoints"), trialPointsNames);
+    trialBackoff = r.getLabel(key("trialBackoff"));
+    trialQualityDrop = r.getScalar(key("trialQualityDrop"));
+}
+
 
 Foam::dcpRBFErrorGuidedSwaps::dcpRBFErrorGuidedSwaps
 (
@@ -62,6 +105,18 @@ Foam::dcpRBFErrorGuidedSwaps::dcpRBFErrorGuidedSwaps
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::dcpRBFErrorGuidedSettings::maxTrialWait()
+{
+    return label(key("trialBackoff").hi);
+}
+
+
+Foam::label Foam::dcpRBFErrorGuidedSettings::nSwapDefault() const
+{
+    return label(key("nSwap").deflt);
+}
+
 
 Foam::label Foam::dcpRBFErrorGuidedSwaps::lowestCells(const label nCells) const
 {

@@ -29,9 +29,10 @@ Foam::labelList Foam::dcpRBFTrialWindow::lowest
         dcprbf::smallestValues(q.cdata(), std::size_t(q.size()), std::size_t(nLocal))
     );
 
-    List<scalarList> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = dcpRBFCompat::makeList<scalar>(lowestHere);
-    dcpRBFCompat::allGatherList(all);
+    const List<scalarList> all
+    (
+        dcpRBFCompat::allGather(dcpRBFCompat::makeList<scalar>(lowestHere))
+    );
     std::vector<scalar> merged;
     for (const scalarList& l : all)
     {

@@ -18,6 +18,12 @@ namespace Foam
     (
         dcpRBFSwapRule, dcpRBFNearestSwaps, context, nearest
     );
+
+    defineTypeNameAndDebug(dcpRBFNearestSettings, 0);
+    addToRunTimeSelectionTable
+    (
+        dcpRBFSwapRuleSettings, dcpRBFNearestSettings, dictionary
+    );
 }
 
 
