@@ -70,6 +70,15 @@ Foam::hingeStripDisplacementPointPatchVectorField::displacement() const
 
     // The turning part's displacement (as solidBodyMotionDisplacement
     // makes it, bit for bit), blended where 0 < s < 1
+    // The rotation's axis and angle (the shorter way round), from the
+    // quaternion's parts: atan2 is exact near rest, where slerp's acos would
+    // turn a round-off rotation into one of 1e-8 rad
+    const quaternion& q = T.r();
+    const scalar sign = q.w() < 0 ? -1 : 1;
+    const scalar sinHalf = mag(q.v());
+    const scalar angle = 2*atan2(sinHalf, sign*q.w());
+    const vector axis = sinHalf > 0 ? sign*q.v()/sinHalf : vector(1, 0, 0);
+
     const pointField& x0 = localPoints0();
     tmp<vectorField> td(transformPoints(T, x0) - x0);
     vectorField& d = td.ref();
@@ -82,7 +91,7 @@ Foam::hingeStripDisplacementPointPatchVectorField::displacement() const
         }
         else if (s < 1)
         {
-            const quaternion R(slerp(quaternion::I, T.r(), s));
+            const quaternion R(axis, s*angle);
             d[i] = R.transform(x0[i] - hingePoint_) + hingePoint_ - x0[i];
         }
     }
