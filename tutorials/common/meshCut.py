@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
-"""Cuts of a 3D polyMesh by a plane y = Y, for the tutorials' pictures
-(wing3D/plotCut.py, flap3D/plotCut.py): the ASCII polyMesh read, the faces
-cut into segments in (x, z), the cuts of several times side by side."""
+"""Cuts of a 3D polyMesh by a plane y = Y (or x = X), for the tutorials'
+pictures (wing3D/plotCut.py, flap3D/plotCut.py, flappingWing3D/plotResults.py):
+the ASCII polyMesh read, the faces cut into segments in (x, z) (or (y, z)),
+the cuts of several times side by side."""
 import os
 import re
 
@@ -31,49 +32,54 @@ def readFaces(path):
     return [list(map(int, f.split())) for f in re.findall(r"\d+\(([^()]*)\)", body)[:n]]
 
 
-def cut(P, faces, y0):
-    """Segments where the faces cross y = y0, in (x, z)."""
+def cut(P, faces, y0, axis=1):
+    """Segments where the faces cross the plane coordinate axis = y0 (1: y,
+    0: x), in the other two coordinates ((x, z) or (y, z))."""
+    u = 0 if axis == 1 else 1
     segs = []
     for f in faces:
         q = P[f]
-        s = q[:, 1] - y0
+        s = q[:, axis] - y0
         if s.min() > 0 or s.max() < 0:
             continue
         pts = []
         for i in range(len(f)):
             a, b = q[i], q[(i + 1) % len(f)]
-            sa, sb = a[1] - y0, b[1] - y0
+            sa, sb = a[axis] - y0, b[axis] - y0
             if (sa < 0) != (sb < 0):
                 t = sa/(sa - sb)
                 pts.append(a + t*(b - a))
         if len(pts) == 2:
-            segs.append([(pts[0][0], pts[0][2]), (pts[1][0], pts[1][2])])
+            segs.append([(pts[0][u], pts[0][2]), (pts[1][u], pts[1][2])])
     return segs
 
 
-def plotCuts(times, y, window, output, title="t = %s s"):
-    """The cut y = y of the mesh at rest and at each of times (those written)
-    side by side in window (x0, x1, z0, z1), into output."""
+def plotCuts(times, y, window, output, title="t = %s s", axis=1):
+    """The cut y = y (axis 1; axis 0: x = y) of the mesh at rest and at each
+    of times (those written) side by side in window (x0, x1, z0, z1) of the
+    plotted coordinates ((x, z); axis 0: (y, z)), into output."""
+    u = 0 if axis == 1 else 1
+    name = "xy"[axis]
     x0, x1, z0, z1 = window
     faces = readFaces("constant/polyMesh/faces")
     P0 = readPoints("constant/polyMesh/points")
     # faces near the section only (a vertex in the window's neighbourhood;
     # cut() keeps those crossing the plane)
-    near = (P0[:, 0] > x0 - 0.5) & (P0[:, 0] < x1 + 0.5) & (np.abs(P0[:, 2]) < max(abs(z0), abs(z1)) + 0.5)
-    near &= np.abs(P0[:, 1] - y) < 1.0
+    near = (P0[:, u] > x0 - 0.5) & (P0[:, u] < x1 + 0.5) & (np.abs(P0[:, 2]) < max(abs(z0), abs(z1)) + 0.5)
+    near &= np.abs(P0[:, axis] - y) < 1.0
     faces = [f for f in faces if near[f].any()]
 
     cases = [("rest", P0)] + [(title % t, readPoints(os.path.join(t, "polyMesh", "points")))
                               for t in times if os.path.exists(os.path.join(t, "polyMesh", "points"))]
     fig, axes = plt.subplots(1, len(cases), figsize=(4.5*len(cases), 4.5*(z1 - z0)/(x1 - x0) + 0.8),
                              squeeze=False)
-    for ax, (name, P) in zip(axes[0], cases):
-        ax.add_collection(LineCollection(cut(P, faces, y), linewidths=0.3, colors="k"))
+    for ax, (what, P) in zip(axes[0], cases):
+        ax.add_collection(LineCollection(cut(P, faces, y, axis), linewidths=0.3, colors="k"))
         ax.set_xlim(x0, x1)
         ax.set_ylim(z0, z1)
         ax.set_aspect("equal")
-        ax.set_title("%s, cut y = %g m" % (name, y))
-        ax.set_xlabel("x [m]")
+        ax.set_title("%s, cut %s = %g m" % (what, name, y))
+        ax.set_xlabel("%s [m]" % "xy"[u])
         ax.set_ylabel("z [m]")
     fig.tight_layout()
     os.makedirs(os.path.dirname(output) or ".", exist_ok=True)

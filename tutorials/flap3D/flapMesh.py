@@ -23,30 +23,22 @@ Usage: flapMesh.py [output.msh] [--coarse] [--size-wing H] ...
 """
 import argparse
 import math
+import os
 import sys
 
 import gmsh
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from wingLayers import (checkLayers, distance, layerHeights, naca00,  # noqa: E402
+                        outwardNormals, threshold, unshear)
 
 CHORD = 1.0
 SEMI_SPAN = 2.0
 HINGE_X = 0.75           # the hinge line: x = 0.75, z = 0, along y
 CUTS = (0.70, 0.80)      # the chordwise cuts: wing | hinge | flap
-# Meshed sheared by x += SHEAR*y (2e-6 m at the tip), unsheared when written:
-# gmsh 4.8's boundary-layer extrusion keeps its normals in a set ordered by
-# x, y, z with a tolerance of 1e-12, and on a cylindrical (unswept) wing the
-# surface mesher gives rows of nodes whose x differ by 1e-15..1e-11 only:
-# the set's order is then inconsistent and some nodes' normals are not found
-# (no layers there: collapsed prisms, or a node doubled between prisms and
-# tetrahedra, depending on the memory layout of the run). Sheared, the x of
-# the nodes of a row differ by >= 1e-9 m.
+# Meshed sheared by x += SHEAR*y (2e-6 m at the tip), unsheared when written
+# (wingLayers.unshear says why)
 SHEAR = 1e-6
-
-
-def naca00(x, t):
-    """Half thickness of a NACA 00tt section, standard (blunt) trailing edge:
-    0.252 % of the chord thick at x = 1 for t = 0.12."""
-    return 5*t*(0.2969*math.sqrt(x) - 0.1260*x - 0.3516*x**2
-                + 0.2843*x**3 - 0.1015*x**4)
 
 
 def section(geo, y, thickness, n):
@@ -74,99 +66,18 @@ def section(geo, y, thickness, n):
     return curves, points
 
 
-def outwardNormals(surfaces):
-    """Unit outward normals at the wing's mesh nodes (angle-weighted mean of
-    the triangles' normals), as a list of vector triangles (gmsh "VT" list
-    data). Nodes of the root section get normals in the plane y = 0, so that
-    the prisms' side faces stay in the symmetry plane."""
-    tags, coords, _ = gmsh.model.mesh.getNodes()
-    xyz = {int(t): coords[3*i:3*i + 3] for i, t in enumerate(tags)}
-    normal = {}
-    tris = []
-    for s in surfaces:
-        _, _, nodes = gmsh.model.mesh.getElements(2, s)
-        ts = [[int(t) for t in nodes[0][3*i:3*i + 3]] for i in range(len(nodes[0])//3)]
-        ns = []
-        vote = 0.0
-        for a, b, c in ts:
-            pa, pb, pc = xyz[a], xyz[b], xyz[c]
-            u = [pb[k] - pa[k] for k in range(3)]
-            v = [pc[k] - pa[k] for k in range(3)]
-            n = [u[1]*v[2] - u[2]*v[1], u[2]*v[0] - u[0]*v[2], u[0]*v[1] - u[1]*v[0]]
-            # outward: away from the chord line (tip cap: +y)
-            g = [(pa[k] + pb[k] + pc[k])/3 for k in range(3)]
-            xc = min(max(g[0], 0.1*CHORD), 0.9*CHORD)   # (the shear: < 2e-6 m)
-            out = [g[0] - xc, 0.0, g[2]]
-            if g[1] > SEMI_SPAN - 1e-9:
-                out = [0.0, 1.0, 0.0]
-            vote += sum(n[k]*out[k] for k in range(3))
-            ns.append(((a, b, c), n))
-        sign = 1.0 if vote > 0 else -1.0
-        for tri, n in ns:
-            tris.append(tri)
-            mn = math.sqrt(sum(c*c for c in n))
-            for i, t in enumerate(tri):
-                # angle-weighted: the bisector at the trailing edge's corners
-                p0, p1, p2 = (xyz[tri[(i + j) % 3]] for j in range(3))
-                u = [p1[k] - p0[k] for k in range(3)]
-                v = [p2[k] - p0[k] for k in range(3)]
-                cosA = sum(u[k]*v[k] for k in range(3))/math.sqrt(
-                    sum(c*c for c in u)*sum(c*c for c in v))
-                w = math.acos(max(-1.0, min(1.0, cosA)))/mn
-                m = normal.setdefault(t, [0.0, 0.0, 0.0])
-                for k in range(3):
-                    m[k] += sign*w*n[k]
-    for t, n in normal.items():
-        if abs(xyz[t][1]) < 1e-9:
-            n[1] = 0.0
-        m = math.sqrt(sum(c*c for c in n))
-        normal[t] = [c/m for c in n]
-    data = []
-    for tri in tris:
-        data += [xyz[t][0] for t in tri] + [xyz[t][1] for t in tri] + [xyz[t][2] for t in tri]
-        for t in tri:
-            data += normal[t]
-    return len(tris), data
+def outward(g):
+    """Roughly outward at a wing triangle's centroid g: away from the chord
+    line (the tip cap: +y)."""
+    xc = min(max(g[0], 0.1*CHORD), 0.9*CHORD)   # (the shear: < 2e-6 m)
+    if g[1] > SEMI_SPAN - 1e-9:
+        return [0.0, 1.0, 0.0]
+    return [g[0] - xc, 0.0, g[2]]
 
 
-def checkLayers(surfaces, layers, nl):
-    """Fail unless every wing triangle has its nl prisms (gmsh writes a
-    collapsed prism as a pyramid) and no node is doubled."""
-    nTri = sum(len(gmsh.model.mesh.getElementsByType(2, s)[0]) for s in surfaces)
-    nPrism = sum(len(gmsh.model.mesh.getElementsByType(6, v)[0]) for v in layers)
-    _, coords, _ = gmsh.model.mesh.getNodes()
-    nDup = len(coords)//3 - len({tuple(coords[i:i + 3]) for i in range(0, len(coords), 3)})
-    if nPrism != nl*nTri or nDup:
-        sys.exit("flapMesh: %d prisms for %d triangles x %d layers, %d doubled nodes"
-                 % (nPrism, nTri, nl, nDup))
-
-
-def unshear():
-    """x -= SHEAR*y at every node (y unchanged: the root stays at y = 0)."""
-    tags, coords, _ = gmsh.model.mesh.getNodes()
-    for i, t in enumerate(tags):
-        x, y, z = coords[3*i:3*i + 3]
-        gmsh.model.mesh.setNode(t, [x - SHEAR*y, y, z], [])
-
-
-def threshold(field, distance, sizeMin, sizeMax, distMin, distMax, stop):
-    """A Threshold field on the Distance field distance."""
-    f = field.add("Threshold")
-    field.setNumber(f, "InField", distance)
-    field.setNumber(f, "SizeMin", sizeMin)
-    field.setNumber(f, "SizeMax", sizeMax)
-    field.setNumber(f, "DistMin", distMin)
-    field.setNumber(f, "DistMax", distMax)
-    field.setNumber(f, "StopAtDistMax", stop)
-    return f
-
-
-def distance(field, curves, n):
-    """A Distance field to the curves (n points per curve)."""
-    f = field.add("Distance")
-    field.setNumbers(f, "EdgesList", curves)
-    field.setNumber(f, "NumPointsPerCurve", n)
-    return f
+def atRoot(p):
+    """A node of the root section (in the symmetry plane y = 0)."""
+    return abs(p[1]) < 1e-9
 
 
 def main():
@@ -203,11 +114,7 @@ def main():
     nl = a.layers or defaults[4]
     h1 = a.first_height or defaults[5]
     growth = a.growth or defaults[6]
-    heights = []
-    h = 0.0
-    for i in range(nl):
-        h += h1*growth**i
-        heights.append(h)
+    heights = layerHeights(h1, growth, nl)
 
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 1)
@@ -266,7 +173,7 @@ def main():
     # the same surface mesh)
     gmsh.model.mesh.generate(2)
     view = gmsh.view.add("normals")
-    gmsh.view.addListData(view, "VT", *outwardNormals(wing))
+    gmsh.view.addListData(view, "VT", *outwardNormals(wing, outward, atRoot))
     ext = gmsh.model.geo.extrudeBoundaryLayer(
         [(2, t) for t in wing], [1]*nl, heights, True,
         viewIndex=gmsh.view.getIndex(view))
@@ -293,8 +200,8 @@ def main():
     geo.synchronize()
 
     gmsh.model.mesh.generate(3)
-    checkLayers(wing, layers, nl)
-    unshear()
+    checkLayers("flapMesh", wing, layers, nl)
+    unshear(SHEAR)
 
     # The prisms' side faces on the root plane belong to the symmetry patch
     # (the extruded entities' extents are known once meshed)

@@ -21,7 +21,10 @@ import os
 import re
 import sys
 
-import matplotlib
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from forceCoeffs import interpolate, read_coefficients  # noqa: E402
+
+import matplotlib                                       # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt                         # noqa: E402
 from matplotlib.collections import LineCollection      # noqa: E402
@@ -103,35 +106,6 @@ def plot_mesh(faces):
                  " about the quarter chord (leading edge, boundary layer)")
     fig.tight_layout()
     fig.savefig("images/mesh.png", dpi=110)
-
-
-def read_coefficients(case="."):
-    """Rows of forceCoeffs' coefficient.dat and a name -> column map."""
-    rows, header = [], []
-    with open(os.path.join(case, "postProcessing/forceCoeffs/0/coefficient.dat")) as f:
-        for line in f:
-            if line.startswith("#"):
-                header = line[1:].split()
-                continue
-            rows.append([float(v) for v in line.split()])
-    return rows, {name: i for i, name in enumerate(header)}
-
-
-def interpolate(ts, ys, t):
-    """Linear interpolation of ys(ts) at t (ts increasing)."""
-    lo, hi = 0, len(ts) - 1
-    if t <= ts[lo]:
-        return ys[lo]
-    if t >= ts[hi]:
-        return ys[hi]
-    while hi - lo > 1:
-        mid = (lo + hi)//2
-        if ts[mid] <= t:
-            lo = mid
-        else:
-            hi = mid
-    w = (t - ts[lo])/(ts[hi] - ts[lo])
-    return (1 - w)*ys[lo] + w*ys[hi]
 
 
 def compare_rigid(t_from, tolerance):

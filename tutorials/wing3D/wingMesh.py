@@ -18,21 +18,19 @@ Usage: wingMesh.py [output.msh] [--coarse | --fine] [--size-wing H] ...
 """
 import argparse
 import math
+import os
 import sys
 
 import gmsh
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from wingLayers import (distance, layerHeights, naca00, outwardNormals,  # noqa: E402
+                        threshold)
 
 SEMI_SPAN = 1.1963
 ROOT_CHORD = 0.806
 TIP_CHORD = 0.453
 SWEEP_LE = 30.0          # deg
-
-
-def naca00(x, t):
-    """Half thickness of a NACA 00tt section, standard (blunt) trailing edge:
-    0.21 % of the chord thick at x = 1 for t = 0.10."""
-    return 5*t*(0.2969*math.sqrt(x) - 0.1260*x - 0.3516*x**2
-                + 0.2843*x**3 - 0.1015*x**4)
 
 
 def section(geo, y, thickness, n):
@@ -53,62 +51,20 @@ def section(geo, y, thickness, n):
             le, teU, teL)
 
 
-def outwardNormals(surfaces):
-    """Unit outward normals at the wing's mesh nodes (angle-weighted mean of
-    the triangles' normals), as a list of vector triangles (gmsh "VT" list
-    data). Nodes of the root section get normals in the plane y = 0, so that
-    the prisms' side faces stay in the symmetry plane."""
-    tags, coords, _ = gmsh.model.mesh.getNodes()
-    xyz = {int(t): coords[3*i:3*i + 3] for i, t in enumerate(tags)}
-    normal = {}
-    tris = []
-    for s in surfaces:
-        _, _, nodes = gmsh.model.mesh.getElements(2, s)
-        ts = [[int(t) for t in nodes[0][3*i:3*i + 3]] for i in range(len(nodes[0])//3)]
-        ns = []
-        vote = 0.0
-        for a, b, c in ts:
-            pa, pb, pc = xyz[a], xyz[b], xyz[c]
-            u = [pb[k] - pa[k] for k in range(3)]
-            v = [pc[k] - pa[k] for k in range(3)]
-            n = [u[1]*v[2] - u[2]*v[1], u[2]*v[0] - u[0]*v[2], u[0]*v[1] - u[1]*v[0]]
-            # outward: away from the chord point of the triangle's station
-            # (tip cap: +y)
-            g = [(pa[k] + pb[k] + pc[k])/3 for k in range(3)]
-            xle = g[1]*math.tan(math.radians(SWEEP_LE))
-            ch = ROOT_CHORD + (TIP_CHORD - ROOT_CHORD)*g[1]/SEMI_SPAN
-            xc = min(max(g[0], xle + 0.1*ch), xle + 0.9*ch)
-            out = [g[0] - xc, 0.0, g[2]]
-            if g[1] > SEMI_SPAN - 1e-9:
-                out = [0.0, 1.0, 0.0]
-            vote += sum(n[k]*out[k] for k in range(3))
-            ns.append(((a, b, c), n))
-        sign = 1.0 if vote > 0 else -1.0
-        for tri, n in ns:
-            tris.append(tri)
-            mn = math.sqrt(sum(c*c for c in n))
-            for i, t in enumerate(tri):
-                # angle-weighted: the bisector at the sharp trailing edge
-                p0, p1, p2 = (xyz[tri[(i + j) % 3]] for j in range(3))
-                u = [p1[k] - p0[k] for k in range(3)]
-                v = [p2[k] - p0[k] for k in range(3)]
-                cosA = sum(u[k]*v[k] for k in range(3))/math.sqrt(
-                    sum(c*c for c in u)*sum(c*c for c in v))
-                w = math.acos(max(-1.0, min(1.0, cosA)))/mn
-                m = normal.setdefault(t, [0.0, 0.0, 0.0])
-                for k in range(3):
-                    m[k] += sign*w*n[k]
-    for t, n in normal.items():
-        if abs(xyz[t][1]) < 1e-9:
-            n[1] = 0.0
-        m = math.sqrt(sum(c*c for c in n))
-        normal[t] = [c/m for c in n]
-    data = []
-    for tri in tris:
-        data += [xyz[t][0] for t in tri] + [xyz[t][1] for t in tri] + [xyz[t][2] for t in tri]
-        for t in tri:
-            data += normal[t]
-    return len(tris), data
+def outward(g):
+    """Roughly outward at a wing triangle's centroid g: away from the chord
+    point of the triangle's station (the tip cap: +y)."""
+    xle = g[1]*math.tan(math.radians(SWEEP_LE))
+    ch = ROOT_CHORD + (TIP_CHORD - ROOT_CHORD)*g[1]/SEMI_SPAN
+    xc = min(max(g[0], xle + 0.1*ch), xle + 0.9*ch)
+    if g[1] > SEMI_SPAN - 1e-9:
+        return [0.0, 1.0, 0.0]
+    return [g[0] - xc, 0.0, g[2]]
+
+
+def atRoot(p):
+    """A node of the root section (in the symmetry plane y = 0)."""
+    return abs(p[1]) < 1e-9
 
 
 def main():
@@ -143,11 +99,7 @@ def main():
     nl = a.layers or defaults[3]
     h1 = a.first_height or defaults[4]
     growth = a.growth or defaults[5]
-    heights = []
-    h = 0.0
-    for i in range(nl):
-        h += h1*growth**i
-        heights.append(h)
+    heights = layerHeights(h1, growth, nl)
 
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 1)
@@ -174,25 +126,11 @@ def main():
 
     # Sizes: fine along the leading and trailing edges and the tip
     field = gmsh.model.mesh.field
-    dEdge = field.add("Distance")
-    field.setNumbers(dEdge, "EdgesList", lete + tipCurves)
-    field.setNumber(dEdge, "NumPointsPerCurve", 400)
-    tEdge = field.add("Threshold")
-    field.setNumber(tEdge, "InField", dEdge)
-    field.setNumber(tEdge, "SizeMin", he)
-    field.setNumber(tEdge, "SizeMax", hw)
-    field.setNumber(tEdge, "DistMin", 0.005)
-    field.setNumber(tEdge, "DistMax", 0.08)
-    field.setNumber(tEdge, "StopAtDistMax", 1)
+    tEdge = threshold(field, distance(field, lete + tipCurves, 400), he, hw, 0.005, 0.08, 1)
     dWing = field.add("Distance")
     field.setNumbers(dWing, "FacesList", wing)
     field.setNumber(dWing, "NumPointsPerCurve", 100)
-    tWing = field.add("Threshold")
-    field.setNumber(tWing, "InField", dWing)
-    field.setNumber(tWing, "SizeMin", hw)
-    field.setNumber(tWing, "SizeMax", hf)
-    field.setNumber(tWing, "DistMin", 0.02)
-    field.setNumber(tWing, "DistMax", 3.0)
+    tWing = threshold(field, dWing, hw, hf, 0.02, 3.0, 0)
     fMin = field.add("Min")
     field.setNumbers(fMin, "FieldsList", [tEdge, tWing])
     field.setAsBackgroundMesh(fMin)
@@ -208,7 +146,7 @@ def main():
     # the same surface mesh)
     gmsh.model.mesh.generate(2)
     view = gmsh.view.add("normals")
-    gmsh.view.addListData(view, "VT", *outwardNormals(wing))
+    gmsh.view.addListData(view, "VT", *outwardNormals(wing, outward, atRoot))
     ext = gmsh.model.geo.extrudeBoundaryLayer(
         [(2, t) for t in wing], [1]*nl, heights, True,
         viewIndex=gmsh.view.getIndex(view))
