@@ -6,7 +6,9 @@
 # rigidly about the hinge) land where the formulas put every point of their
 # surfaces, checkMesh passes; the same on 2 processors split across the
 # span gives the serial points; a hinge point off the motion's axis is
-# refused, naming hingePoint.
+# refused, naming hingePoint. With rotationInterpolation and blendProfile
+# hinge (the flap turning on the wing), the same surface and a valid mesh;
+# the hinge's keywords refused where they cannot serve.
 
 # flap3DCoarse: the tutorial's case on its coarse mesh, to t = 20 in 4 steps
 flap3DCoarse() {
@@ -76,6 +78,56 @@ test_flap3D_parallelEqualsSerial() {
     do
         grep -q hingeStripDisplacement "par/processor$p/0/pointDisplacement" \
             || fail "decomposePar lost hingeStripDisplacement (processor$p)"
+    done
+}
+
+# hingeRotation [ROTATION]: rotationInterpolation with the flap's hinge (the
+# rotation dictionary ROTATION; default: the hinge line, blendProfile hinge,
+# hingedTo the wing and the symmetry plane)
+hingeRotation() {
+    local rotation='{ centre (0.75 0 0); axis (0 1 0); blendProfile hinge; hingedTo (wing symmetry); }'
+    [ $# -gt 0 ] && rotation="$1"
+    foamDictionary constant/dynamicMeshDict -entry dcpRBFCoeffs/rotationInterpolation -add true > /dev/null
+    foamDictionary constant/dynamicMeshDict -entry dcpRBFCoeffs/rotation -add "$rotation" > /dev/null
+}
+
+# rotationInterpolation on the flap, which turns on the static wing along
+# the hinge line (the star ring has no room there: refused without the
+# hinge): blendProfile hinge keeps the mesh valid to +40 deg, the surface
+# where the hinge formulas put it, the wing and the symmetry plane out of
+# the ring (the log says how many of their points)
+test_flap3D_hingeBlend_meshValidSurfaceAsFormula() {
+    flap3DCoarse || return 1
+    hingeRotation
+    run moveDynamicMesh || return 1
+    grep -q "blendProfile hinge, hinged to [1-9][0-9]* static points" log.moveDynamicMesh \
+        || fail "no hinge in the set-up: $(grep -m1 -A1 'rotationInterpolation, 1 body' log.moveDynamicMesh)" || return 1
+    meshOkAtEveryTime || return 1
+    surfaceAsFormula 20 40
+}
+
+# The hinge's refusals, each naming its keyword: hingedTo a moving patch,
+# hingedTo without blendProfile hinge, blendProfile hinge without the
+# hinge line's axis in 3D
+test_flap3D_hingeBlendRefusals() {
+    local case rotation expect
+    flap3DCoarse || return 1
+    cp constant/dynamicMeshDict dynamicMeshDict.orig
+    for case in movingPartner notHinge noAxis
+    do
+        case $case in
+        (movingPartner) rotation='{ centre (0.75 0 0); axis (0 1 0); blendProfile hinge; hingedTo (wing flap); }'
+                        expect='Keyword hingedTo: patch flap is in movingPatches' ;;
+        (notHinge)      rotation='{ centre (0.75 0 0); axis (0 1 0); hingedTo (wing); }'
+                        expect='Keyword hingedTo has no effect with blendProfile star' ;;
+        (noAxis)        rotation='{ centre (0.75 0 0); blendProfile hinge; hingedTo (wing); }'
+                        expect='blendProfile hinge: body movingPatches needs its hinge line: centre (a point of it) and axis' ;;
+        esac
+        cp dynamicMeshDict.orig constant/dynamicMeshDict
+        hingeRotation "$rotation"
+        ! moveDynamicMesh > "log.$case" 2>&1 || fail "$case: accepted" || return 1
+        grep -A4 "FOAM FATAL IO ERROR" "log.$case" | tr '\n' ' ' > fatal
+        grep -qF "$expect" fatal || fail "$case: the FatalIOError does not say: $expect: $(head -c 300 fatal)" || return 1
     done
 }
 

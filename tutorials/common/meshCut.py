@@ -63,14 +63,16 @@ def plotCuts(times, y, window, output, title="t = %s s", axis=1):
     x0, x1, z0, z1 = window
     faces = readFaces("constant/polyMesh/faces")
     P0 = readPoints("constant/polyMesh/points")
-    # faces near the section only (a vertex in the window's neighbourhood;
-    # cut() keeps those crossing the plane)
-    near = (P0[:, u] > x0 - 0.5) & (P0[:, u] < x1 + 0.5) & (np.abs(P0[:, 2]) < max(abs(z0), abs(z1)) + 0.5)
-    near &= np.abs(P0[:, axis] - y) < 1.0
-    faces = [f for f in faces if near[f].any()]
-
     cases = [("rest", P0)] + [(title % t, readPoints(os.path.join(t, "polyMesh", "points")))
                               for t in times if os.path.exists(os.path.join(t, "polyMesh", "points"))]
+    # faces near the section only (a vertex in the window's neighbourhood at
+    # one of the times; cut() keeps those crossing the plane)
+    near = np.zeros(len(P0), dtype=bool)
+    for _, P in cases:
+        near |= ((P[:, u] > x0 - 0.5) & (P[:, u] < x1 + 0.5)
+                 & (np.abs(P[:, 2]) < max(abs(z0), abs(z1)) + 0.5) & (np.abs(P[:, axis] - y) < 1.0))
+    faces = [f for f in faces if near[f].any()]
+
     fig, axes = plt.subplots(1, len(cases), figsize=(4.5*len(cases), 4.5*(z1 - z0)/(x1 - x0) + 0.8),
                              squeeze=False)
     for ax, (what, P) in zip(axes[0], cases):

@@ -96,6 +96,10 @@ def compare(omega, tolerance, t_from):
         yr = [interpolate(rt, ry, x) for x in t]
         ax[1 + i].plot(rt, ry, "k-", lw=2.5, alpha=0.4, label="rigid mesh rotation")
         ax[1 + i].plot(t, y, "r-", lw=1, label="dcpRBF")
+        # the impulsive start's spike (the first steps) off the scale
+        late = [v for x, v in zip(t, y) if x >= min(t_from, 0.5*t_end)]
+        pad = 0.05*(max(late) - min(late)) + 1e-9
+        ax[1 + i].set_ylim(min(late) - pad, max(late) + pad)
         ax[1 + i].set_ylabel(name)
         ax[1 + i].legend(fontsize=8)
         for k in range(1, nPeriods):

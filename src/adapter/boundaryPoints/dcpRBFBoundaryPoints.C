@@ -284,6 +284,30 @@ Foam::labelList Foam::dcpRBFBoundaryPoints::holderOf() const
 }
 
 
+std::vector<bool> Foam::dcpRBFBoundaryPoints::gatherFlags
+(
+    const boolList& flag
+) const
+{
+    labelList local(localPoints_.size(), 0);
+    forAll(localPoints_, i)
+    {
+        local[i] = flag[localPoints_[i]];
+    }
+    const List<List<label>> all(dcpRBFCompat::allGather<label>(local));
+    std::vector<bool> global(size(), false);
+    label k = 0;
+    for (const List<label>& procFlags : all)
+    {
+        for (const label f : procFlags)
+        {
+            global[concatToGlobal_[k++]] = f;
+        }
+    }
+    return global;
+}
+
+
 dcprbf::Values Foam::dcpRBFBoundaryPoints::gather
 (
     const pointField& prescribed

@@ -20,7 +20,8 @@ const Foam::Enum<Foam::dcpRBFRotation::blendProfile>
 Foam::dcpRBFRotation::blendProfileNames
 ({
     {blendProfile::star, "star"},
-    {blendProfile::log, "log"}
+    {blendProfile::log, "log"},
+    {blendProfile::hinge, "hinge"}
 });
 
 //- The choices of blendProfile: the Enum's names
@@ -116,11 +117,11 @@ Foam::dcpRBFRotation::dcpRBFRotation(const dcpRBFContext& context)
         coeffs.found("rotation") ? coeffs.subDict("rotation") : dictionary::null;
     const dcpRBFDictReader r(dict);
     r.checkKeywordsOf("rotation");
-    readBodies(mesh, dict, settings);
     profile_ = r.getEnum(dcpRBFKeywords::get("rotation", "blendProfile"), blendProfileNames);
+    readBodies(mesh, dict, settings);
     slope_ = r.getScalar(dcpRBFKeywords::get("rotation", "blendSlope"));
     ramp_ = r.getScalar(dcpRBFKeywords::get("rotation", "blendRamp"));
-    if (profile_ != blendProfile::star)
+    if (profile_ == blendProfile::log)
     {
         for (const word k : {"blendSlope", "blendRamp"})
         {
@@ -129,7 +130,7 @@ Foam::dcpRBFRotation::dcpRBFRotation(const dcpRBFContext& context)
                 FatalIOErrorInFunction(dict)
                     << "Keyword " << k << " has no effect with blendProfile "
                     << blendProfileNames[profile_] << ". It belongs to"
-                    << " blendProfile star" << exit(FatalIOError);
+                    << " blendProfile star or hinge" << exit(FatalIOError);
             }
         }
     }
@@ -189,14 +190,25 @@ dcprbf::Values Foam::dcpRBFRotation::fit(const dcprbf::Values& d)
     }
 
     // The rest: prescribed minus each body's rotation about its centre
-    // (its translation and its non-rigid motion)
+    // (its translation and its non-rigid motion); hinged, minus the
+    // blended rotation, which is not the body's near the hinge line nor 0
+    // on the partner
     dcprbf::Values rest(d);
-    for (label i = 0; i < boundary_.size(); ++i)
+    if (profile_ == blendProfile::hinge)
     {
-        if (bodyOf_[i] >= 0)
+        dcprbf::Values blended;
+        dcprbf::blendedRigidDisplacement(turns, x, boundaryWeights_, blended);
+        rest -= blended;
+    }
+    else
+    {
+        for (label i = 0; i < boundary_.size(); ++i)
         {
-            rest.row(i) -=
-                turns[bodyOf_[i]].displacement(x.row(i).transpose()).transpose();
+            if (bodyOf_[i] >= 0)
+            {
+                rest.row(i) -=
+                    turns[bodyOf_[i]].displacement(x.row(i).transpose()).transpose();
+            }
         }
     }
     const scalar scale = d.rows() ? d.cwiseAbs().maxCoeff() : 0;

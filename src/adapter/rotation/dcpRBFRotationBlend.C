@@ -15,6 +15,7 @@ Description
 #include "clockTime.H"
 #include "StringStream.H"
 
+#include <algorithm>
 #include <cmath>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -53,7 +54,7 @@ void Foam::dcpRBFRotation::computeWeights
     try
     {
         dcprbf::BodyBlend blend(boundary_.points(), bodyOf_, centres_);
-        if (profile_ == blendProfile::star)
+        if (profile_ != blendProfile::log)
         {
             // 3D with many boundary points: radii from a 2-degree grid of
             // directions (decided on the global set: the same on every
@@ -61,10 +62,26 @@ void Foam::dcpRBFRotation::computeWeights
             const int grid = (projection_.dim() == 3 && boundary_.size() > 5000) ? 90 : 0;
             forAll(bodyNames_, b)
             {
-                blend.setStar(b, slope_, ramp_, grid);
+                if (profile_ == blendProfile::hinge)
+                {
+                    // the hinge line: in 2D about the plane's normal
+                    const Eigen::Vector3d axis
+                    (
+                        projection_.dim() == 3 ? axes_[b] : Eigen::Vector3d::UnitZ()
+                    );
+                    blend.setHinge(b, axis, partners_[b], slope_, ramp_, grid);
+                }
+                else
+                {
+                    blend.setStar(b, slope_, ramp_, grid);
+                }
             }
         }
         weights_ = blend.weights(evalPoints_);
+        if (profile_ == blendProfile::hinge)
+        {
+            boundaryWeights_ = blend.weights(boundary_.points());
+        }
         writeBlend(mesh);
         Info<< "dcpRBF: rotationInterpolation, " << bodyNames_.size()
             << (bodyNames_.size() == 1 ? " body" : " bodies")
@@ -83,8 +100,14 @@ void Foam::dcpRBFRotation::computeWeights
             {
                 Info<< ", no static point (the whole mesh moves with it)";
             }
-            Info<< " from it, blendProfile " << blendProfileNames[profile_]
-                << nl;
+            Info<< " from it, blendProfile " << blendProfileNames[profile_];
+            if (profile_ == blendProfile::hinge)
+            {
+                Info<< ", hinged to "
+                    << std::count(partners_[b].begin(), partners_[b].end(), true)
+                    << " static points (hingedTo: left out of the ring)";
+            }
+            Info<< nl;
         }
     }
     catch (const dcprbf::Error& e)
@@ -102,7 +125,9 @@ void Foam::dcpRBFRotation::computeWeights
             << " centre than the body in some direction: give the body's pivot"
             << " as its centre (keyword centre), inside or next to the body;"
             << " with axis, the centre moves along it level with the body's"
-            << " centroid: check that the axis is the pivot's"
+            << " centroid: check that the axis is the pivot's. A body that"
+            << " turns on a static one along a shared hinge line (a flap):"
+            << " blendProfile hinge, with axis and hingedTo"
             << exit(FatalIOError);
     }
 }

@@ -42,14 +42,15 @@ Foam::List<const Foam::dictionary*> Foam::dcpRBFRotation::bodyDictionaries
             << " { patches (wing); centre (0.25 0 0); } }"
             << exit(FatalIOError);
     }
-    for (const word k : {"centre", "axis"})
+    for (const word k : {"centre", "axis", "hingedTo"})
     {
         if (dict.found(k))
         {
             FatalIOErrorInFunction(dict)
                 << "Keyword " << k << ": with bodies, each body has its own "
                 << k << " (bodies { wing { patches (wing); centre (0.25 0 0);"
-                << (k == "axis" ? " axis (0 1 0);" : "") << " } }); remove "
+                << (k == "axis" ? " axis (0 1 0);" : "")
+                << (k == "hingedTo" ? " hingedTo (mainWing);" : "") << " } }); remove "
                 << k << " from rotation" << exit(FatalIOError);
         }
     }
@@ -291,9 +292,81 @@ void Foam::dcpRBFRotation::readBodies
     centres_.resize(groups.size());
     axes_.assign(groups.size(), Eigen::Vector3d::Zero());
     axisChecked_.assign(groups.size(), false);
+    partners_.assign(groups.size(), std::vector<bool>(boundary_.size(), false));
     forAll(groups, b)
     {
         readCentre(b, *bodyDicts[b]);
+        readHinge(mesh, b, *bodyDicts[b], settings);
+    }
+}
+
+
+void Foam::dcpRBFRotation::readHinge
+(
+    const polyMesh& mesh,
+    const label b,
+    const dictionary& body,
+    const dcpRBFSettings& settings
+)
+{
+    if (profile_ != blendProfile::hinge)
+    {
+        if (body.found("hingedTo"))
+        {
+            FatalIOErrorInFunction(body)
+                << "Keyword hingedTo has no effect with blendProfile "
+                << blendProfileNames[profile_] << ". It belongs to"
+                << " blendProfile hinge" << exit(FatalIOError);
+        }
+        return;
+    }
+    if (projection_.dim() == 3 && axes_[b].isZero())
+    {
+        FatalIOErrorInFunction(body)
+            << "blendProfile hinge: body " << bodyNames_[b] << " needs its"
+            << " hinge line: centre (a point of it) and axis (its direction),"
+            << " e.g. centre (0.75 0 0); axis (0 1 0);" << exit(FatalIOError);
+    }
+    if (!body.found("hingedTo"))
+    {
+        return;     // a hinge with a gap: nothing static next to the body
+    }
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    labelList mark(mesh.nPoints(), 0);
+    for
+    (
+        const label patchi
+      : dcpRBFSettings::matchPatches
+        (
+            body, "hingedTo",
+            dcpRBFDictReader(body).getWordRes("hingedTo", false), patches
+        )
+    )
+    {
+        if (settings.movingPatchIDs().found(patchi))
+        {
+            FatalIOErrorInFunction(body)
+                << "Keyword hingedTo: patch " << patches[patchi].name()
+                << " is in movingPatches. Allowed: the static or sliding"
+                << " patches the body turns on (a flap's wing, the symmetry"
+                << " plane at its root)" << exit(FatalIOError);
+        }
+        for (const label pointi : patches[patchi].meshPoints())
+        {
+            mark[pointi] = 1;
+        }
+    }
+    syncTools::syncPointList(mesh, mark, maxEqOp<label>(), label(0));
+    boolList onPartner(mark.size());
+    forAll(mark, pointi)
+    {
+        onPartner[pointi] = mark[pointi] > 0;
+    }
+    partners_[b] = boundary_.gatherFlags(onPartner);
+    for (label i = 0; i < boundary_.size(); ++i)
+    {
+        // (the points the body shares with them are the body's)
+        partners_[b][i] = partners_[b][i] && bodyOf_[i] < 0;
     }
 }
 

@@ -254,18 +254,25 @@ const std::vector<K>& table()
     K::choice
     (
         rot, "blendProfile", "star",
-        "the blend's shape: the walls' room, or the radial ring"
+        "the blend's shape: the walls' room, the radial ring, or a hinge"
     ),
     K::real
     (
         rot, "blendSlope", 0.25, 0, true, 10, true,
         "the largest slope of the ring's radii with the angle"
-    ).alsoNeeds("only with `blendProfile star`"),
+    ).alsoNeeds("only with `blendProfile star` or `hinge`"),
     K::real
     (
         rot, "blendRamp", 0.1, 0, true, 1, true,
         "the share of the blend where its slope rises from 0"
-    ).alsoNeeds("only with `blendProfile star`"),
+    ).alsoNeeds("only with `blendProfile star` or `hinge`"),
+    K::other
+    (
+        rot, "hingedTo", type::patches, "none",
+        "patches not in `movingPatches`; only with `blendProfile hinge`; not"
+        " together with `bodies` (each body then has its own)",
+        "the static or sliding patches the single body turns on"
+    ),
 
     // an entry of bodies
     K::other
@@ -285,6 +292,12 @@ const std::vector<K>& table()
         body, "axis", type::direction, "none",
         "a non-zero vector; 3D only; needs `centre`",
         "the body's pivot axis through `centre`"
+    ),
+    K::other
+    (
+        body, "hingedTo", type::patches, "none",
+        "patches not in `movingPatches`; only with `blendProfile hinge`",
+        "the static or sliding patches the body turns on"
     ),
 
     // dcpRBFFvMeshCoeffs

@@ -20,6 +20,8 @@ BodyBlend::BodyBlend
     outer_(centres.size(), std::numeric_limits<double>::infinity()),
     stars_(centres.size()),
     ramps_(centres.size(), 0.0),
+    hingeAxes_(centres.size(), Eigen::Vector3d::Zero()),
+    hingeSides_(centres.size(), Eigen::Vector3d::Zero()),
     boundary_(boundary),
     bodyOf_(bodyOf)
 {
@@ -98,21 +100,8 @@ double BodyBlend::profile(int b, const Eigen::Vector3d& x) const
     }
     if (stars_[b])
     {
-        if (r == 0)
-        {
-            return 1;
-        }
-        double lnIn, lnOut;
-        stars_[b]->radii(x, lnIn, lnOut);
-        if (!(lnOut > lnIn))
-        {
-            throw Error("BodyBlend: body " + std::to_string(b)
-                + ": no room between the body and the static boundary in the"
-                " direction of a point at distance " + std::to_string(r)
-                + " from its centre");
-        }
-        const double t = (lnOut - std::log(r))/(lnOut - lnIn);
-        return t >= 1 ? 1 : t <= 0 ? 0 : ramped(t, ramps_[b]);
+        const double w = r == 0 ? 1 : starProfile(b, x, r);
+        return hingeAxes_[b].isZero() ? w : w*hingeFactor(b, x);
     }
     checkRadialRoom(b);
     if (r >= outer_[b])
@@ -123,7 +112,103 @@ double BodyBlend::profile(int b, const Eigen::Vector3d& x) const
 }
 
 
+double BodyBlend::starProfile(int b, const Eigen::Vector3d& x, double r) const
+{
+    double lnIn, lnOut;
+    stars_[b]->radii(x, lnIn, lnOut);
+    if (std::isinf(lnOut))
+    {
+        return 1;   // nothing static beyond the partner: the body's motion
+    }
+    if (!(lnOut > lnIn))
+    {
+        throw Error("BodyBlend: body " + std::to_string(b)
+            + ": no room between the body and the static boundary in the"
+            " direction of a point at distance " + std::to_string(r)
+            + " from its centre");
+    }
+    const double t = (lnOut - std::log(r))/(lnOut - lnIn);
+    return t >= 1 ? 1 : t <= 0 ? 0 : ramped(t, ramps_[b]);
+}
+
+
+double BodyBlend::hingeFactor(int b, const Eigen::Vector3d& x) const
+{
+    const Eigen::Vector3d& e = hingeAxes_[b];
+    const Eigen::Vector3d d(x - centres_[b]);
+    const Eigen::Vector3d v(d - e*e.dot(d));
+    const double n = v.norm();
+    return n > 0 ? 0.5*(1 + v.dot(hingeSides_[b])/n) : 0.5;
+}
+
+
 void BodyBlend::setStar(int body, double kappa, double ramp, int gridPolar)
+{
+    buildStar(body, kappa, ramp, gridPolar, {});
+}
+
+
+void BodyBlend::setHinge
+(
+    int body,
+    const Eigen::Vector3d& axis,
+    const std::vector<bool>& partner,
+    double kappa,
+    double ramp,
+    int gridPolar
+)
+{
+    if (Eigen::Index(partner.size()) != boundary_.rows())
+    {
+        throw Error("BodyBlend::setHinge: " + std::to_string(partner.size())
+            + " partner marks for " + std::to_string(boundary_.rows()) + " points");
+    }
+    if (!(axis.norm() > 0))
+    {
+        throw Error("BodyBlend::setHinge: zero axis");
+    }
+    const Eigen::Vector3d e(axis.normalized());
+    Eigen::Vector3d centroid(Eigen::Vector3d::Zero());
+    Eigen::Index n = 0;
+    double extent = 0;
+    for (Eigen::Index k = 0; k < boundary_.rows(); ++k)
+    {
+        if (partner[k] && bodyOf_[k] != -1)
+        {
+            throw Error("BodyBlend::setHinge: point " + std::to_string(k)
+                + " is marked as the hinge's partner but belongs to body "
+                + std::to_string(bodyOf_[k]));
+        }
+        if (bodyOf_[k] == body)
+        {
+            const Eigen::Vector3d p(boundary_.row(k).transpose());
+            centroid += p;
+            extent = std::max(extent, (p - centres_[body]).norm());
+            ++n;
+        }
+    }
+    buildStar(body, kappa, ramp, gridPolar, partner);
+    const Eigen::Vector3d d(centroid/double(n) - centres_[body]);
+    const Eigen::Vector3d side(d - e*e.dot(d));
+    if (!(side.norm() > 1e-9*extent))
+    {
+        throw Error("BodyBlend::setHinge: body " + std::to_string(body)
+            + ": the centroid of its points lies on its hinge axis: no side"
+            " to turn");
+    }
+    hingeAxes_[body] = e;
+    hingeSides_[body] = side.normalized();
+}
+
+
+void BodyBlend::buildStar
+(
+    int body,
+    double kappa,
+    double ramp,
+    int gridPolar,
+    const std::vector<bool>& skip
+)
 {
     if (body < 0 || body >= int(centres_.size()))
     {
@@ -133,14 +218,18 @@ void BodyBlend::setStar(int body, double kappa, double ramp, int gridPolar)
     {
         throw Error("BodyBlend::setStar: ramp must be in [0, 1], got " + std::to_string(ramp));
     }
-    Eigen::Index nb = 0;
-    for (const int o : bodyOf_) nb += (o == body);
-    Points own(nb, 3), others(boundary_.rows() - nb, 3);
+    Eigen::Index nb = 0, ns = 0;
+    for (Eigen::Index k = 0; k < boundary_.rows(); ++k)
+    {
+        nb += (bodyOf_[k] == body);
+        ns += (!skip.empty() && skip[k]);
+    }
+    Points own(nb, 3), others(boundary_.rows() - nb - ns, 3);
     Eigen::Index i = 0, j = 0;
     for (Eigen::Index k = 0; k < boundary_.rows(); ++k)
     {
         if (bodyOf_[k] == body) own.row(i++) = boundary_.row(k);
-        else others.row(j++) = boundary_.row(k);
+        else if (skip.empty() || !skip[k]) others.row(j++) = boundary_.row(k);
     }
     auto star = std::make_shared<StarEnvelope>(centres_[body], own, others, kappa);
     if (gridPolar > 0)

@@ -23,6 +23,24 @@
 // everywhere: the whole mesh moves with the body.
 // R_out <= R_in (a static boundary or another body inside the body's
 // circle) leaves no room for a twist: Error, naming the body.
+//
+// A hinged body (setHinge: a flap and the static wing it turns on, which
+// share the hinge line) has static points right next to it, inside any
+// ring about its centre. Its weight is the star ring's w(x) built without
+// those points (the partner), times an angular factor about the hinge
+// line (through c along the unit axis e):
+//
+//     s(x) = w(x) (1 + cos phi(x)) / 2,
+//
+// phi the angle about the axis between x and the body's side (the
+// direction of the body's centroid from the axis). The factor is 1 on the
+// body's side, 0 on the opposite one (the partner's), smooth, and
+// |d/dphi| <= 1/2: the map's Jacobian about the axis, 1 + a ds/dphi, stays
+// positive in the continuum up to a = 2 rad (115 deg) with w = 1, less by
+// the ring's own angular slope where w falls. On the partner the factor
+// is small but not 0 (its side turns by up to a few % of the angle near
+// the hinge line), and on the body near the hinge less than 1: the
+// interpolated rest (prescribed minus the blended rotation) takes both.
 #pragma once
 
 #include "StarEnvelope.hpp"
@@ -61,6 +79,22 @@ public:
     //  a direction grid (StarEnvelope::buildGrid), for large 3D meshes
     void setStar(int body, double kappa, double ramp, int gridPolar = 0);
 
+    //- Make body b hinged about the line through its centre along axis
+    //  (non-zero): the star ring (setStar's arguments) without the points
+    //  marked in partner (per boundary point; static points only), times
+    //  the angular factor (1 + cos phi)/2 about the axis. Throws Error for
+    //  a partner mark on a body's point, a zero axis, or a body whose
+    //  centroid lies on the axis (no side)
+    void setHinge
+    (
+        int body,
+        const Eigen::Vector3d& axis,
+        const std::vector<bool>& partner,
+        double kappa,
+        double ramp,
+        int gridPolar = 0
+    );
+
     //- Per body: the radius turning rigidly (R_in) and where the weight
     //  reaches 0 (R_out)
     double innerRadius(int body) const { return inner_[body]; }
@@ -74,6 +108,9 @@ private:
     //- Per body: the star-shaped ring (null: radial) and its ramp
     std::vector<std::shared_ptr<const StarEnvelope>> stars_;
     std::vector<double> ramps_;
+    //- Per body: its hinge's unit axis and side (zero: not hinged)
+    std::vector<Eigen::Vector3d> hingeAxes_;
+    std::vector<Eigen::Vector3d> hingeSides_;
 
     //- The boundary points and their bodies (for setStar)
     Points boundary_;
@@ -81,6 +118,17 @@ private:
 
     //- s_b at point x
     double profile(int b, const Eigen::Vector3d& x) const;
+
+    //- The star ring's weight of body b at x (r = |x - c_b| > 0)
+    double starProfile(int b, const Eigen::Vector3d& x, double r) const;
+
+    //- Build body b's star ring from its points and the others not
+    //  skipped (skip: empty, or per boundary point)
+    void buildStar(int b, double kappa, double ramp, int gridPolar,
+                   const std::vector<bool>& skip);
+
+    //- The hinge's angular factor of body b at x
+    double hingeFactor(int b, const Eigen::Vector3d& x) const;
 
     //- Error unless R_out > R_in (radial profiles)
     void checkRadialRoom(int b) const;

@@ -215,3 +215,107 @@ TEST(StarEnvelope, GridBoundsNeverWidenTheRing)
         EXPECT_LT(eo - go, tol) << k;
     }
 }
+
+
+namespace
+{
+
+//- A flap hinged at the origin in the plane (x, y), the hinge axis z: the
+//  flap's plate along +x (0.05 .. 1, y = +-0.02: the body), the wing's
+//  along -x (-1 .. -0.05: static, the partner), and far walls: the circle
+//  of radius 5 (static)
+struct Hinge
+{
+    Points boundary;
+    std::vector<int> bodyOf;
+    std::vector<bool> partner;
+    Hinge()
+    {
+        const int n = 20, nw = 120;
+        boundary.resize(4*n + nw, 3);
+        for (int i = 0; i < n; ++i)
+        {
+            const double x = 0.05 + 0.95*i/(n - 1);
+            for (int side = 0; side < 2; ++side)
+            {
+                boundary.row(2*i + side) << x, side ? 0.02 : -0.02, 0;
+                boundary.row(2*n + 2*i + side) << -x, side ? 0.02 : -0.02, 0;
+            }
+        }
+        bodyOf.assign(2*n, 0);
+        bodyOf.resize(4*n, -1);
+        partner.assign(4*n, false);
+        for (int i = 2*n; i < 4*n; ++i) partner[i] = true;
+        boundary.bottomRows(nw) = ring(nw, 5);
+        bodyOf.resize(4*n + nw, -1);
+        partner.resize(4*n + nw, false);
+    }
+};
+
+} // namespace
+
+
+TEST(BodyBlend, HingeTurnsTheFlapSideKeepsThePartnersSide)
+{
+    // the wing touches the flap's ring: a plain ring has no room; hinged,
+    // the weight is 1 at the flap's trailing edge (straight along its
+    // side), 0 at the wing's leading edge (straight opposite) and at the
+    // walls, 1/2 w straight above the hinge line
+    const Hinge h;
+    BodyBlend plain(h.boundary, h.bodyOf, {Eigen::Vector3d::Zero()});
+    plain.setStar(0, 0.25, 0.1);
+    EXPECT_THROW(plain.weights(h.boundary), Error);
+
+    BodyBlend hinge(h.boundary, h.bodyOf, {Eigen::Vector3d::Zero()});
+    hinge.setHinge(0, {0, 0, 2}, h.partner, 0.25, 0.1);
+    Points probe(4, 3);
+    probe << 0.9, 0, 0,   -1.0, 0, 0,   0, 0.5, 0,   0, 5, 0;
+    const Eigen::MatrixXd w = hinge.weights(probe);
+    EXPECT_NEAR(w(0, 0), 1, 1e-14);
+    EXPECT_NEAR(w(1, 0), 0, 1e-14);
+    EXPECT_NEAR(w(2, 0), 0.5, 1e-14);    // r 0.5 < R_in: the ring's w is 1
+    EXPECT_EQ(w(3, 0), 0);
+}
+
+
+TEST(BodyBlend, HingeTurnsACircleAboutItsAxisWithoutFolding)
+{
+    // the map phi -> phi + a s(phi) on a circle about the hinge line keeps
+    // the circle's order up to a = 100 deg (d s/d phi >= -1/2: 1 + a ds/dphi
+    // > 0 below 2 rad), and every point keeps its radius
+    const Hinge h;
+    BodyBlend hinge(h.boundary, h.bodyOf, {Eigen::Vector3d::Zero()});
+    hinge.setHinge(0, {0, 0, 1}, h.partner, 0.25, 0.1);
+    RigidMotion m;
+    m.rotation = {0, 0, 100*EIGEN_PI/180};
+    const int n = 720;
+    Points x = ring(n, 0.5);
+    Values d;
+    blendedRigidDisplacement({m}, x, hinge.weights(x), d);
+    double last = -1e300;
+    for (int k = 0; k < n; ++k)
+    {
+        // start just past the wing's side (phi = pi), go once round
+        const int i = (k + n/2 + 1) % n;
+        const Eigen::Vector3d q(x.row(i) + d.row(i));
+        EXPECT_NEAR(q.norm(), 0.5, 1e-13);
+        double phi = std::atan2(q.y(), q.x());
+        while (phi < last - EIGEN_PI) phi += 2*EIGEN_PI;
+        EXPECT_GT(phi, last) << "fold at point " << i;
+        last = phi;
+    }
+}
+
+
+TEST(BodyBlend, HingeRefusesAPartnerOnTheBodyAZeroAxisNoSide)
+{
+    const Hinge h;
+    BodyBlend blend(h.boundary, h.bodyOf, {Eigen::Vector3d::Zero()});
+    std::vector<bool> onBody(h.partner);
+    onBody[0] = true;
+    EXPECT_THROW(blend.setHinge(0, {0, 0, 1}, onBody, 0.25, 0.1), Error);
+    EXPECT_THROW(blend.setHinge(0, {0, 0, 0}, h.partner, 0.25, 0.1), Error);
+    // the axis along the flap: its centroid is on it
+    EXPECT_THROW(blend.setHinge(0, {1, 0, 0}, h.partner, 0.25, 0.1), Error);
+    EXPECT_THROW(blend.setHinge(0, {0, 0, 1}, std::vector<bool>(3), 0.25, 0.1), Error);
+}
