@@ -68,7 +68,7 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
     const IOdictionary& dict
 )
 :
-    displacementMotionSolver(withPointDisplacement(mesh), dict, typeName),
+    displacementMotionSolver(withPointDisplacement(mesh, dict), dict, typeName),
     dcpRBFStages
     (
         mesh, *this, coeffDict(), pointDisplacement_, points0(), debug

@@ -20,9 +20,27 @@ Description
 
 const Foam::polyMesh& Foam::dcpRBFMotionSolver::withPointDisplacement
 (
-    const polyMesh& mesh
+    const polyMesh& mesh,
+    const dictionary& dict
 )
 {
+    // a mesh class that drives a velocity motion solver (it casts its
+    // solver to velocityMotionSolver, which would abort with a stack trace)
+    const word meshClass(dict.getOrDefault<word>("dynamicFvMesh", word::null));
+    if (meshClass == "interfaceTrackingFvMesh")
+    {
+        FatalIOErrorInFunction(dict)
+            << "dynamicFvMesh " << meshClass << " moves its mesh through a"
+            << " velocity motion solver: each step it sets the free surface's"
+            << " point velocity (pointMotionU) and casts the motion solver to"
+            << " velocityMotionSolver. " << typeName << " is a displacement"
+            << " motion solver and cannot serve it. Use motionSolver"
+            << " velocityLaplacian (motionSolverLibs (fvMotionSolvers"
+            << " interfaceTrackingFvMesh)), as its tutorials do (dcpRBF serves"
+            << " the displacement-driven mesh classes: dynamicMotionSolverFvMesh,"
+            << " dynamicMultiMotionSolverFvMesh, dynamicOversetFvMesh, ...)"
+            << exit(FatalIOError);
+    }
     const auto has = [&](const word& name)
     {
         return IOobject
