@@ -129,3 +129,43 @@ def layerHeights(h1, growth, nl):
         h += h1*growth**i
         heights.append(h)
     return heights
+
+
+def addLayerArguments(ap, edge="size at the leading and trailing edges [m]"):
+    """The mesh options the wing scripts share (None: the script's level's
+    default)."""
+    ap.add_argument("--size-wing", type=float, help="surface size on the wing [m]")
+    ap.add_argument("--size-edge", type=float, help=edge)
+    ap.add_argument("--size-far", type=float, help="size at the far field [m]")
+    ap.add_argument("--layers", type=int, help="prism layers")
+    ap.add_argument("--first-height", type=float, help="first layer height [m]")
+    ap.add_argument("--growth", type=float, help="layer growth ratio")
+
+
+def meshBySizeField():
+    """Sizes from the background field alone (not from the points, the
+    boundary or the curvature); Frontal-Delaunay triangles, Delaunay
+    tetrahedra."""
+    gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
+    gmsh.option.setNumber("Mesh.Algorithm", 6)
+    gmsh.option.setNumber("Mesh.Algorithm3D", 1)
+
+
+def extrudeLayers(surfaces, heights, guide, inPlane=lambda p: False):
+    """Mesh the surfaces, then extrude the prism layers (cumulative heights)
+    along outwardNormals(surfaces, guide, inPlane) (a vector view of list
+    data, which outlives the re-meshing of the surfaces by generate(3), which
+    gives the same surface mesh). Returns the extrusion's entities, the
+    layers' outer surfaces and their volumes."""
+    gmsh.model.mesh.generate(2)
+    view = gmsh.view.add("normals")
+    gmsh.view.addListData(view, "VT", *outwardNormals(surfaces, guide, inPlane))
+    ext = gmsh.model.geo.extrudeBoundaryLayer(
+        [(2, t) for t in surfaces], [1]*len(heights), heights, True,
+        viewIndex=gmsh.view.getIndex(view))
+    top = [ext[i - 1] for i in range(1, len(ext)) if ext[i][0] == 3]
+    layers = [t for d, t in ext if d == 3]
+    gmsh.model.geo.synchronize()
+    return ext, top, layers

@@ -29,8 +29,9 @@ import sys
 import gmsh
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from wingLayers import (checkLayers, distance, layerHeights, naca00,  # noqa: E402
-                        outwardNormals, threshold, unshear)
+from wingLayers import (addLayerArguments, checkLayers, distance,  # noqa: E402
+                        extrudeLayers, layerHeights, meshBySizeField, naca00,
+                        threshold, unshear)
 
 CHORD = 1.0
 SEMI_SPAN = 2.0
@@ -85,15 +86,9 @@ def main():
     ap.add_argument("output", nargs="?", default="flap.msh")
     ap.add_argument("--coarse", action="store_true",
                     help="the integration test's mesh (< 30k cells)")
-    ap.add_argument("--size-wing", type=float, help="surface size on the wing [m]")
-    ap.add_argument("--size-edge", type=float,
-                    help="size at the leading and trailing edges and the tip [m]")
+    addLayerArguments(ap, "size at the leading and trailing edges and the tip [m]")
     ap.add_argument("--size-hinge", type=float,
                     help="size on the hinge strip and at the cuts [m]")
-    ap.add_argument("--size-far", type=float, help="size at the far field [m]")
-    ap.add_argument("--layers", type=int, help="prism layers")
-    ap.add_argument("--first-height", type=float, help="first layer height [m]")
-    ap.add_argument("--growth", type=float, help="layer growth ratio")
     ap.add_argument("--thickness", type=float, default=0.12,
                     help="section thickness / chord")
     ap.add_argument("--box", type=float, nargs=4, default=(-5.0, 8.0, 5.0, 5.0),
@@ -161,25 +156,13 @@ def main():
     fMin = field.add("Min")
     field.setNumbers(fMin, "FieldsList", [tEdge, tCut, tWing])
     field.setAsBackgroundMesh(fMin)
-    gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
-    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
-    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
-    gmsh.option.setNumber("Mesh.Algorithm", 6)
-    gmsh.option.setNumber("Mesh.Algorithm3D", 1)
+    meshBySizeField()
 
     # Surface mesh of the wing, then the prism layers along our own normals
     # (a vector view: the root nodes march in the symmetry plane; list data,
     # which outlives the re-meshing of the wing by generate(3), which gives
     # the same surface mesh)
-    gmsh.model.mesh.generate(2)
-    view = gmsh.view.add("normals")
-    gmsh.view.addListData(view, "VT", *outwardNormals(wing, outward, atRoot))
-    ext = gmsh.model.geo.extrudeBoundaryLayer(
-        [(2, t) for t in wing], [1]*nl, heights, True,
-        viewIndex=gmsh.view.getIndex(view))
-    top = [ext[i - 1] for i in range(1, len(ext)) if ext[i][0] == 3]
-    layers = [t for d, t in ext if d == 3]
-    gmsh.model.geo.synchronize()
+    ext, top, layers = extrudeLayers(wing, heights, outward, atRoot)
 
     # Box: x in [x0, x1], y in [0, y1], z in [-z, z]; the root plane has the
     # hole of the prism layers' outer section

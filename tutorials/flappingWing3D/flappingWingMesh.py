@@ -25,8 +25,9 @@ import sys
 import gmsh
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from wingLayers import (checkLayers, distance, layerHeights, naca00,  # noqa: E402
-                        outwardNormals, threshold, unshear)
+from wingLayers import (addLayerArguments, checkLayers, distance,  # noqa: E402
+                        extrudeLayers, layerHeights, meshBySizeField, naca00,
+                        threshold, unshear)
 
 CHORD = 1.0
 ROOT = 0.2               # y of the root section: the wing's gap to the flapping axis
@@ -85,13 +86,7 @@ def main():
     ap.add_argument("output", nargs="?", default="flappingWing.msh")
     ap.add_argument("--coarse", action="store_true",
                     help="the integration test's mesh (< 30k cells)")
-    ap.add_argument("--size-wing", type=float, help="surface size on the wing [m]")
-    ap.add_argument("--size-edge", type=float,
-                    help="size at the leading and trailing edges, root and tip [m]")
-    ap.add_argument("--size-far", type=float, help="size at the far field [m]")
-    ap.add_argument("--layers", type=int, help="prism layers")
-    ap.add_argument("--first-height", type=float, help="first layer height [m]")
-    ap.add_argument("--growth", type=float, help="layer growth ratio")
+    addLayerArguments(ap, "size at the leading and trailing edges, root and tip [m]")
     ap.add_argument("--radius", type=float, default=10.0,
                     help="the far-field sphere's radius about the pivot [m] (default 10)")
     a = ap.parse_args()
@@ -138,23 +133,11 @@ def main():
     fMin = field.add("Min")
     field.setNumbers(fMin, "FieldsList", [tEdge, tWing])
     field.setAsBackgroundMesh(fMin)
-    gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
-    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
-    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
-    gmsh.option.setNumber("Mesh.Algorithm", 6)
-    gmsh.option.setNumber("Mesh.Algorithm3D", 1)
+    meshBySizeField()
 
     # Surface mesh of the wing, then the prism layers along our own normals
     # (list data, which outlives the re-meshing of the wing by generate(3))
-    gmsh.model.mesh.generate(2)
-    view = gmsh.view.add("normals")
-    gmsh.view.addListData(view, "VT", *outwardNormals(wing, outward))
-    ext = gmsh.model.geo.extrudeBoundaryLayer(
-        [(2, t) for t in wing], [1]*nl, heights, True,
-        viewIndex=gmsh.view.getIndex(view))
-    top = [ext[i - 1] for i in range(1, len(ext)) if ext[i][0] == 3]
-    layers = [t for d, t in ext if d == 3]
-    gmsh.model.geo.synchronize()
+    ext, top, layers = extrudeLayers(wing, heights, outward)
 
     # The sphere about the pivot, the layers' outer surface its hole
     far = sphere(geo, (PIVOT[0] + SHEAR*PIVOT[1], PIVOT[1], PIVOT[2]), a.radius, hf)

@@ -24,8 +24,8 @@ import sys
 import gmsh
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from wingLayers import (distance, layerHeights, naca00, outwardNormals,  # noqa: E402
-                        threshold)
+from wingLayers import (addLayerArguments, distance, extrudeLayers,  # noqa: E402
+                        layerHeights, meshBySizeField, naca00, threshold)
 
 SEMI_SPAN = 1.1963
 ROOT_CHORD = 0.806
@@ -74,12 +74,7 @@ def main():
                     help="the integration test's mesh (~20k cells)")
     ap.add_argument("--fine", action="store_true",
                     help="a mesh of more than 1M points (not run in the tests)")
-    ap.add_argument("--size-wing", type=float, help="surface size on the wing [m]")
-    ap.add_argument("--size-edge", type=float, help="size at the leading and trailing edges [m]")
-    ap.add_argument("--size-far", type=float, help="size at the far field [m]")
-    ap.add_argument("--layers", type=int, help="prism layers")
-    ap.add_argument("--first-height", type=float, help="first layer height [m]")
-    ap.add_argument("--growth", type=float, help="layer growth ratio")
+    addLayerArguments(ap, "size at the leading and trailing edges [m]")
     ap.add_argument("--thickness", type=float, default=0.10,
                     help="section thickness / chord")
     ap.add_argument("--box-scale", type=float, default=1.0,
@@ -134,25 +129,13 @@ def main():
     fMin = field.add("Min")
     field.setNumbers(fMin, "FieldsList", [tEdge, tWing])
     field.setAsBackgroundMesh(fMin)
-    gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
-    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
-    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
-    gmsh.option.setNumber("Mesh.Algorithm", 6)
-    gmsh.option.setNumber("Mesh.Algorithm3D", 1)
+    meshBySizeField()
 
     # Surface mesh of the wing, then the prism layers along our own normals
     # (a vector view: the root nodes march in the symmetry plane; list data,
     # which outlives the re-meshing of the wing by generate(3), which gives
     # the same surface mesh)
-    gmsh.model.mesh.generate(2)
-    view = gmsh.view.add("normals")
-    gmsh.view.addListData(view, "VT", *outwardNormals(wing, outward, atRoot))
-    ext = gmsh.model.geo.extrudeBoundaryLayer(
-        [(2, t) for t in wing], [1]*nl, heights, True,
-        viewIndex=gmsh.view.getIndex(view))
-    top = [ext[i - 1] for i in range(1, len(ext)) if ext[i][0] == 3]
-    layers = [t for d, t in ext if d == 3]
-    gmsh.model.geo.synchronize()
+    ext, top, layers = extrudeLayers(wing, heights, outward, atRoot)
 
     # Box: x in [-5, 7] m, y in [0, 4] m, z in [-4, 4] m, times --box-scale
     x0, x1, y1, z = (a.box_scale*v for v in (-5.0, 7.0, 4.0, 4.0))
