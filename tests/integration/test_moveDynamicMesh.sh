@@ -60,6 +60,43 @@ test_airfoil2D_pitch40deg_meshValidEveryStep() {
     meshOkAtEveryTime
 }
 
+# Without movingPatches and staticPatches, the lists come from the
+# pointDisplacement conditions (the wing's angularOscillatingDisplacement
+# moves, the fixedValue walls stay, frontAndBack is empty), said once, and
+# the points are the listed case's bit for bit; one list alone is refused
+test_airfoil2D_patchListsInferred_samePointsAsListed() {
+    write_motionControls .
+    airfoilMesh 0.04 1.0 || return 1
+    airfoilPointDisplacement 0.698
+    mkdir -p inferred
+    cp -r constant system 0 inferred/
+    dynamicMeshDict "movingPatches (wing); staticPatches (inlet outlet topAndBottom); supportRadius 2.5;"
+    run moveDynamicMesh || return 1
+    (
+        cd inferred || exit 1
+        dynamicMeshDict "supportRadius 2.5;"
+        run moveDynamicMesh || exit 1
+    ) || fail "the inferred case failed (see inferred/log.moveDynamicMesh)" || return 1
+    grep -q "^dcpRBF: movingPatches 1(wing) and staticPatches 3(topAndBottom outlet inlet) from the pointDisplacement conditions" \
+        inferred/log.moveDynamicMesh || fail "no inference line: $(grep -m1 'movingPatches' inferred/log.moveDynamicMesh)" || return 1
+    [ "$(grep -c 'from the pointDisplacement conditions' inferred/log.moveDynamicMesh)" -eq 1 ] \
+        || fail "the inference said more than once" || return 1
+    local t
+    t=$(writtenTimes . | sort -g | tail -n 1)
+    pointsAgree "$t/polyMesh/points" "inferred/$t/polyMesh/points" 0 "listed vs inferred at t = $t" || return 1
+    (
+        cd inferred || exit 1
+        dynamicMeshDict "movingPatches (wing); supportRadius 2.5;"
+        ! moveDynamicMesh > log.oneList 2>&1 || exit 2
+        grep -A3 "FOAM FATAL IO ERROR" log.oneList | grep -q "staticPatches" || exit 3
+    )
+    case $? in
+    (0) ;;
+    (2) fail "movingPatches without staticPatches was accepted" ;;
+    (*) fail "the refusal of one list does not name staticPatches: $(grep -A3 'FOAM FATAL' inferred/log.oneList)" ;;
+    esac
+}
+
 test_hollowCube3D_rotate30deg_meshValidEveryStep() {
     write_hollowCube . 6
     run blockMesh || return 1

@@ -183,7 +183,8 @@ void Foam::dcpRBFPrescribedDisplacement::checkPatches(const dictionary& dict)
             << " patch that moves under movingPatches, one that stays put"
             << " under staticPatches." << endl;
     }
-    if (unlisted.size())
+    // (inferred lists: the inference's log line has named them, sliding)
+    if (unlisted.size() && !settings_.patchesInferred())
     {
         WarningInFunction
             << "Patches in neither movingPatches nor staticPatches: "

@@ -41,14 +41,17 @@ const std::vector<K>& table()
     // dcpRBFCoeffs
     K::other
     (
-        coeffs, "movingPatches", type::patches, "required",
+        coeffs, "movingPatches", type::patches,
+        "inferred from the `pointDisplacement` conditions",
         "a non-empty list; each entry matches at least one patch or group;"
-        " no `empty` or coupled patch; no patch also in `staticPatches`",
+        " no `empty` or coupled patch; no patch also in `staticPatches`;"
+        " both lists or neither",
         "patches whose points follow their pointDisplacement condition"
     ),
     K::other
     (
-        coeffs, "staticPatches", type::patches, "required",
+        coeffs, "staticPatches", type::patches,
+        "inferred from the `pointDisplacement` conditions",
         "may be `()`; the same rules as `movingPatches`",
         "patches whose points stay put"
     ),

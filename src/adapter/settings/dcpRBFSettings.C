@@ -15,6 +15,7 @@ License
 #include "processorCyclicPolyPatch.H"
 #include "cyclicAMIPolyPatch.H"
 #include "wordRes.H"
+#include "pointFields.H"
 #include "OStringStream.H"
 
 #include <cctype>
@@ -120,6 +121,110 @@ const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
     }
     dcpRBFDictReader(dict).checkKeywordsOf("dcpRBFCoeffs");
     return dict;
+}
+
+
+Foam::labelList Foam::dcpRBFSettings::patchList
+(
+    const dictionary& dict,
+    const polyMesh& mesh,
+    const bool moving
+)
+{
+    if (dict.found("movingPatches") || dict.found("staticPatches"))
+    {
+        return moving
+          ? readPatches(dict, "movingPatches", mesh.boundaryMesh(), false)
+          : readPatches(dict, "staticPatches", mesh.boundaryMesh(), true);
+    }
+    labelList movingIDs, staticIDs;
+    inferPatches(dict, mesh, movingIDs, staticIDs, moving);
+    return moving ? movingIDs : staticIDs;
+}
+
+
+void Foam::dcpRBFSettings::inferPatches
+(
+    const dictionary& dict,
+    const polyMesh& mesh,
+    labelList& movingIDs,
+    labelList& staticIDs,
+    const bool report
+)
+{
+    const pointVectorField* d =
+        mesh.findObject<pointVectorField>("pointDisplacement");
+    if (!d)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keywords movingPatches and staticPatches missing, and no"
+            << " pointDisplacement field to infer them from: give both,"
+            << " e.g. movingPatches (wing); staticPatches (inlet outlet);"
+            << exit(FatalIOError);
+    }
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    DynamicList<label> moving, still;
+    wordList sliding;
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi];
+        const pointPatchVectorField& pf = d->boundaryField()[patchi];
+        if (pp.coupled() || polyPatch::constraintType(pp.type()))
+        {
+            continue;   // empty, wedge, symmetry, cyclic, processor, ...
+        }
+        if (!pf.fixesValue())
+        {
+            sliding.append(pp.name());
+        }
+        else if (pf.type() == "fixedValue")
+        {
+            still.append(patchi);
+        }
+        else
+        {
+            moving.append(patchi);
+        }
+    }
+    movingIDs = moving;
+    staticIDs = still;
+    const auto names = [&patches](const labelList& ids)
+    {
+        wordList n(ids.size());
+        forAll(ids, i)
+        {
+            n[i] = patches[ids[i]].name();
+        }
+        return n;
+    };
+    if (movingIDs.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keywords movingPatches and staticPatches missing, and no"
+            << " patch's pointDisplacement condition prescribes motion (fixed-"
+            << "value kinds other than fixedValue: solidBodyMotionDisplacement,"
+            << " angularOscillatingDisplacement, oscillatingDisplacement,"
+            << " uniformFixedValue, ...). fixedValue patches "
+            << names(staticIDs) << ", sliding " << sliding
+            << ". Give movingPatches and staticPatches" << exit(FatalIOError);
+    }
+    if (!report)
+    {
+        return;
+    }
+    Info<< "dcpRBF: movingPatches " << names(movingIDs)
+        << " and staticPatches " << names(staticIDs) << " from the"
+        << " pointDisplacement conditions (fixedValue: static; another kind"
+        << " that fixes the value: moving); ";
+    if (sliding.empty())
+    {
+        Info<< "no sliding patch";
+    }
+    else
+    {
+        Info<< "sliding " << sliding;
+    }
+    Info<< " (list both movingPatches and staticPatches to choose)" << endl;
 }
 
 
@@ -382,11 +487,9 @@ Foam::dcpRBFSettings::dcpRBFSettings
     const bool staticBorder
 )
 :
-    movingPatchIDs_
-    (
-        readPatches(checkKeywords(dict), "movingPatches", mesh.boundaryMesh(), false)
-    ),
-    staticPatchIDs_(readPatches(dict, "staticPatches", mesh.boundaryMesh(), true)),
+    movingPatchIDs_(patchList(checkKeywords(dict), mesh, true)),
+    staticPatchIDs_(patchList(dict, mesh, false)),
+    patchesInferred_(!dict.found("movingPatches") && !dict.found("staticPatches")),
     kernel_(readKernel(dcpRBFDictReader(dict), mesh, points0)),
     polynomial_(dcpRBFDictReader(dict).getSwitch(key("polynomial")))
 {
