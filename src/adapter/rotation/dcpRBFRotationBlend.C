@@ -44,6 +44,70 @@ void Foam::dcpRBFRotation::writeBlend(const polyMesh& mesh) const
 }
 
 
+void Foam::dcpRBFRotation::setProfiles(dcprbf::BodyBlend& blend) const
+{
+    if (profile_ == blendProfile::log)
+    {
+        return;     // BodyBlend's own: the radial ring
+    }
+    // 3D with many boundary points: radii from a 2-degree grid of
+    // directions (decided on the global set: the same on every processor);
+    // else exact at every point
+    const int grid = (projection_.dim() == 3 && boundary_.size() > 5000) ? 90 : 0;
+    forAll(bodyNames_, b)
+    {
+        if (profile_ == blendProfile::hinge)
+        {
+            // the hinge line: in 2D about the plane's normal
+            const Eigen::Vector3d axis
+            (
+                projection_.dim() == 3 ? axes_[b] : Eigen::Vector3d::UnitZ()
+            );
+            blend.setHinge(b, axis, partners_[b], slope_, ramp_, grid);
+        }
+        else
+        {
+            blend.setStar(b, slope_, ramp_, grid);
+        }
+    }
+}
+
+
+void Foam::dcpRBFRotation::reportBlend
+(
+    const dcprbf::BodyBlend& blend,
+    const scalar seconds
+) const
+{
+    Info<< "dcpRBF: rotationInterpolation, " << bodyNames_.size()
+        << (bodyNames_.size() == 1 ? " body" : " bodies")
+        << ", blend computed in " << seconds << " s" << nl;
+    forAll(bodyNames_, b)
+    {
+        Info<< "    " << bodyNames_[b] << ": " << bodyPoints_[b].size()
+            << " boundary points, centre "
+            << projection_.pointFromCore(centres_[b].data())
+            << ", farthest body point " << blend.innerRadius(b);
+        if (std::isfinite(blend.outerRadius(b)))
+        {
+            Info<< ", nearest static point " << blend.outerRadius(b);
+        }
+        else
+        {
+            Info<< ", no static point (the whole mesh moves with it)";
+        }
+        Info<< " from it, blendProfile " << blendProfileNames[profile_];
+        if (profile_ == blendProfile::hinge)
+        {
+            Info<< ", hinged to "
+                << std::count(partners_[b].begin(), partners_[b].end(), true)
+                << " static points (hingedTo: left out of the ring)";
+        }
+        Info<< nl;
+    }
+}
+
+
 void Foam::dcpRBFRotation::computeWeights
 (
     const polyMesh& mesh,
@@ -54,61 +118,14 @@ void Foam::dcpRBFRotation::computeWeights
     try
     {
         dcprbf::BodyBlend blend(boundary_.points(), bodyOf_, centres_);
-        if (profile_ != blendProfile::log)
-        {
-            // 3D with many boundary points: radii from a 2-degree grid of
-            // directions (decided on the global set: the same on every
-            // processor); else exact at every point
-            const int grid = (projection_.dim() == 3 && boundary_.size() > 5000) ? 90 : 0;
-            forAll(bodyNames_, b)
-            {
-                if (profile_ == blendProfile::hinge)
-                {
-                    // the hinge line: in 2D about the plane's normal
-                    const Eigen::Vector3d axis
-                    (
-                        projection_.dim() == 3 ? axes_[b] : Eigen::Vector3d::UnitZ()
-                    );
-                    blend.setHinge(b, axis, partners_[b], slope_, ramp_, grid);
-                }
-                else
-                {
-                    blend.setStar(b, slope_, ramp_, grid);
-                }
-            }
-        }
+        setProfiles(blend);
         weights_ = blend.weights(evalPoints_);
         if (profile_ == blendProfile::hinge)
         {
             boundaryWeights_ = blend.weights(boundary_.points());
         }
         writeBlend(mesh);
-        Info<< "dcpRBF: rotationInterpolation, " << bodyNames_.size()
-            << (bodyNames_.size() == 1 ? " body" : " bodies")
-            << ", blend computed in " << timer.elapsedTime() << " s" << nl;
-        forAll(bodyNames_, b)
-        {
-            Info<< "    " << bodyNames_[b] << ": " << bodyPoints_[b].size()
-                << " boundary points, centre "
-                << projection_.pointFromCore(centres_[b].data())
-                << ", farthest body point " << blend.innerRadius(b);
-            if (std::isfinite(blend.outerRadius(b)))
-            {
-                Info<< ", nearest static point " << blend.outerRadius(b);
-            }
-            else
-            {
-                Info<< ", no static point (the whole mesh moves with it)";
-            }
-            Info<< " from it, blendProfile " << blendProfileNames[profile_];
-            if (profile_ == blendProfile::hinge)
-            {
-                Info<< ", hinged to "
-                    << std::count(partners_[b].begin(), partners_[b].end(), true)
-                    << " static points (hingedTo: left out of the ring)";
-            }
-            Info<< nl;
-        }
+        reportBlend(blend, timer.elapsedTime());
     }
     catch (const dcprbf::Error& e)
     {
