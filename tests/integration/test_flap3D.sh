@@ -106,6 +106,17 @@ test_flap3D_hingeBlend_meshValidSurfaceAsFormula() {
     surfaceAsFormula 20 40
 }
 
+# The hinge blend on 2 processors split across the span (the wing, the
+# strip and the flap cut; hingedTo's points marked on each processor and
+# gathered) gives the serial points
+test_flap3D_hingeBlend_parallelEqualsSerial() {
+    flap3DCoarse || return 1
+    hingeRotation
+    parallelEqualsSerial 20 'method hierarchical; coeffs { n (1 2 1); order xyz; }' || return 1
+    grep -q "hinged to [1-9][0-9]* static points" par/log.mpirun \
+        || fail "the parallel run has no hinge: $(grep -m1 'blendProfile' par/log.mpirun)"
+}
+
 # The hinge's refusals, each naming its keyword: hingedTo a moving patch,
 # hingedTo without blendProfile hinge, blendProfile hinge without the
 # hinge line's axis in 3D

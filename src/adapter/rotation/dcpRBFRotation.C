@@ -187,6 +187,16 @@ dcprbf::Values Foam::dcpRBFRotation::fit(const dcprbf::Values& d)
         // is interpolated with the rest
         turns[b] = motions_[b];
         turns[b].translation.setZero();
+        if (profile_ == blendProfile::hinge)
+        {
+            // a hinge turns about its line: the fit's part off the axis
+            // (a round-off tilt, or the strip's) is interpolated with the rest
+            const Eigen::Vector3d e
+            (
+                projection_.dim() == 3 ? axes_[b] : Eigen::Vector3d::UnitZ()
+            );
+            turns[b].rotation = e*e.dot(turns[b].rotation);
+        }
     }
 
     // The rest: prescribed minus each body's rotation about its centre
