@@ -191,10 +191,7 @@ dcprbf::Values Foam::dcpRBFRotation::fit(const dcprbf::Values& d)
         {
             // a hinge turns about its line: the fit's part off the axis
             // (a round-off tilt, or the strip's) is interpolated with the rest
-            const Eigen::Vector3d e
-            (
-                projection_.dim() == 3 ? axes_[b] : Eigen::Vector3d::UnitZ()
-            );
+            const Eigen::Vector3d e(hingeAxis(b));
             turns[b].rotation = e*e.dot(turns[b].rotation);
         }
     }

@@ -58,12 +58,7 @@ void Foam::dcpRBFRotation::setProfiles(dcprbf::BodyBlend& blend) const
     {
         if (profile_ == blendProfile::hinge)
         {
-            // the hinge line: in 2D about the plane's normal
-            const Eigen::Vector3d axis
-            (
-                projection_.dim() == 3 ? axes_[b] : Eigen::Vector3d::UnitZ()
-            );
-            blend.setHinge(b, axis, partners_[b], slope_, ramp_, grid);
+            blend.setHinge(b, hingeAxis(b), partners_[b], slope_, ramp_, grid);
         }
         else
         {
