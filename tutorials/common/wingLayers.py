@@ -20,14 +20,18 @@ def naca00(x, t):
                 + 0.2843*x**3 - 0.1015*x**4)
 
 
-def outwardNormals(surfaces, guide, inPlane=lambda p: False):
+def outwardNormals(surfaces, guide, inPlane=lambda p: False, atNodes=False):
     """Unit outward normals at the mesh nodes of the surfaces (angle-weighted
     mean of the triangles' normals: the bisector at a trailing edge's
     corners), as a list of vector triangles (gmsh "VT" list data). Each
     surface is oriented by a vote of its triangles against guide(g), a
     roughly outward direction at a triangle's centroid g. Nodes where
     inPlane(p) is true get normals with no y component (a root in a
-    symmetry plane y = 0: the prisms' side faces stay in it)."""
+    symmetry plane y = 0: the prisms' side faces stay in it). atNodes: as
+    vector points at the nodes (gmsh "VP"), which gmsh finds at each node
+    exactly; the triangles' data are found by a search that can take a
+    node's normal from another surface's triangle whose box holds the node
+    (a thin part, tilted: a deflected flap's trailing edge)."""
     tags, coords, _ = gmsh.model.mesh.getNodes()
     xyz = {int(t): coords[3*i:3*i + 3] for i, t in enumerate(tags)}
     normal = {}
@@ -65,6 +69,10 @@ def outwardNormals(surfaces, guide, inPlane=lambda p: False):
         m = math.sqrt(sum(c*c for c in n))
         normal[t] = [c/m for c in n]
     data = []
+    if atNodes:
+        for t, n in normal.items():
+            data += list(xyz[t]) + n
+        return len(normal), data
     for tri in tris:
         data += [xyz[t][0] for t in tri] + [xyz[t][1] for t in tri] + [xyz[t][2] for t in tri]
         for t in tri:
@@ -153,15 +161,16 @@ def meshBySizeField():
     gmsh.option.setNumber("Mesh.Algorithm3D", 1)
 
 
-def extrudeLayers(surfaces, heights, guide, inPlane=lambda p: False):
+def extrudeLayers(surfaces, heights, guide, inPlane=lambda p: False, atNodes=False):
     """Mesh the surfaces, then extrude the prism layers (cumulative heights)
     along outwardNormals(surfaces, guide, inPlane) (a vector view of list
     data, which outlives the re-meshing of the surfaces by generate(3), which
-    gives the same surface mesh). Returns the extrusion's entities, the
-    layers' outer surfaces and their volumes."""
+    gives the same surface mesh; atNodes: see outwardNormals). Returns the
+    extrusion's entities, the layers' outer surfaces and their volumes."""
     gmsh.model.mesh.generate(2)
     view = gmsh.view.add("normals")
-    gmsh.view.addListData(view, "VT", *outwardNormals(surfaces, guide, inPlane))
+    gmsh.view.addListData(view, "VP" if atNodes else "VT",
+                          *outwardNormals(surfaces, guide, inPlane, atNodes))
     ext = gmsh.model.geo.extrudeBoundaryLayer(
         [(2, t) for t in surfaces], [1]*len(heights), heights, True,
         viewIndex=gmsh.view.getIndex(view))

@@ -19,7 +19,14 @@ with the trailing-edge base and the aft part of the tip cap); the cut lines
 are curves of the geometry, edges shared by the patches. symmetry (y = 0),
 farfield (the other five faces of the box).
 
-Usage: flapMesh.py [output.msh] [--coarse] [--size-wing H] ...
+With --deflection DEG the wing is made with its flap deflected (trailing
+edge down for DEG > 0): every point of a section turned about the hinge line
+by s DEG, s the strip's blend of the rest x (quintic smoothstep from 0 at
+x = 0.70 to 1 at x = 0.80), as hingeStripDisplacement and the flap's
+solidBodyMotionDisplacement move it: the reference for the forces on the
+morphed mesh (Allrun -flow).
+
+Usage: flapMesh.py [output.msh] [--coarse] [--deflection DEG] [--size-wing H] ...
 """
 import argparse
 import math
@@ -42,7 +49,37 @@ CUTS = (0.70, 0.80)      # the chordwise cuts: wing | hinge | flap
 SHEAR = 1e-6
 
 
-def section(geo, y, thickness, n):
+def blend(x):
+    """The strip's fraction s of the flap's rotation at rest x: 0 ahead of
+    x = 0.70, 1 aft of x = 0.80, a quintic smoothstep between."""
+    t = min(max((x - CUTS[0])/(CUTS[1] - CUTS[0]), 0.0), 1.0)
+    return t*t*t*(10 - 15*t + 6*t*t)
+
+
+def deflect(x, z, deg):
+    """The rest point (x, z) of a section turned about the hinge line
+    (x = 0.75, z = 0) by blend(x) deg, trailing edge down for deg > 0."""
+    a = math.radians(blend(x)*deg)
+    if a == 0:
+        return x, z                             # bit for bit the undeflected mesh
+    u = x - HINGE_X
+    return HINGE_X + u*math.cos(a) + z*math.sin(a), -u*math.sin(a) + z*math.cos(a)
+
+
+def rest(g, deg):
+    """The rest position (x, z) of a deflected point g (deflect's inverse: a
+    fixed-point iteration on the blend's rest x)."""
+    if deg == 0:
+        return g[0], g[2]
+    x = g[0]
+    for _ in range(20):
+        a = -math.radians(blend(x)*deg)
+        u = g[0] - HINGE_X
+        x = HINGE_X + u*math.cos(a) + g[2]*math.sin(a)
+    return x, -u*math.sin(a) + g[2]*math.cos(a)
+
+
+def section(geo, y, thickness, n, deg):
     """The section at y as a closed chain of 7 curves, each from points[i] to
     points[(i + 1) % 7]: upper flap, hinge and front (TE -> LE), lower front,
     hinge and flap (LE -> TE), trailing-edge base (lower -> upper); points:
@@ -54,7 +91,8 @@ def section(geo, y, thickness, n):
     xs = sorted([x for x in xs if min(abs(x - c) for c in CUTS) > 0.3/n] + list(CUTS))
 
     def pt(x, side):
-        return geo.addPoint(CHORD*x + SHEAR*y, y, side*CHORD*naca00(x, thickness))
+        px, pz = deflect(CHORD*x, side*CHORD*naca00(x, thickness), deg)
+        return geo.addPoint(px + SHEAR*y, y, pz)
 
     upper = [pt(x, 1) for x in reversed(xs)]        # TE -> LE
     lower = [upper[-1]] + [pt(x, -1) for x in xs[1:]]   # LE -> TE
@@ -67,13 +105,16 @@ def section(geo, y, thickness, n):
     return curves, points
 
 
-def outward(g):
+def outward(g, deg):
     """Roughly outward at a wing triangle's centroid g: away from the chord
-    line (the tip cap: +y)."""
-    xc = min(max(g[0], 0.1*CHORD), 0.9*CHORD)   # (the shear: < 2e-6 m)
+    line at rest (the tip cap: +y), turned with the section."""
     if g[1] > SEMI_SPAN - 1e-9:
         return [0.0, 1.0, 0.0]
-    return [g[0] - xc, 0.0, g[2]]
+    x, z = rest(g, deg)                         # (the shear: < 2e-6 m)
+    xc = min(max(x, 0.1*CHORD), 0.9*CHORD)
+    a = math.radians(blend(x)*deg)
+    u, w = x - xc, z
+    return [u*math.cos(a) + w*math.sin(a), 0.0, -u*math.sin(a) + w*math.cos(a)]
 
 
 def atRoot(p):
@@ -89,6 +130,8 @@ def main():
     addLayerArguments(ap, "size at the leading and trailing edges and the tip [m]")
     ap.add_argument("--size-hinge", type=float,
                     help="size on the hinge strip and at the cuts [m]")
+    ap.add_argument("--deflection", type=float, default=0.0, metavar="DEG",
+                    help="the flap deflected by DEG (trailing edge down for DEG > 0)")
     ap.add_argument("--thickness", type=float, default=0.12,
                     help="section thickness / chord")
     ap.add_argument("--box", type=float, nargs=4, default=(-5.0, 8.0, 5.0, 5.0),
@@ -121,8 +164,8 @@ def main():
     # trailing edge's base); the flat tip cap in three plane pieces, cut by
     # straight lines at x = 0.70 and 0.80.
     geo = gmsh.model.geo
-    rc, rp = section(geo, 0.0, a.thickness, 60)
-    tc, tp = section(geo, SEMI_SPAN, a.thickness, 60)
+    rc, rp = section(geo, 0.0, a.thickness, 60, a.deflection)
+    tc, tp = section(geo, SEMI_SPAN, a.thickness, 60, a.deflection)
     span = [geo.addLine(r, t) for r, t in zip(rp, tp)]
     sides = [geo.addSurfaceFilling([geo.addCurveLoop(
         [rc[i], span[(i + 1) % 7], -tc[i], -span[i]])]) for i in range(7)]
@@ -162,7 +205,10 @@ def main():
     # (a vector view: the root nodes march in the symmetry plane; list data,
     # which outlives the re-meshing of the wing by generate(3), which gives
     # the same surface mesh)
-    ext, top, layers = extrudeLayers(wing, heights, outward, atRoot)
+    # (a deflected flap: the normals at the nodes, see outwardNormals; the
+    # undeflected mesh as it was made before, with the triangles' data)
+    ext, top, layers = extrudeLayers(wing, heights, lambda g: outward(g, a.deflection), atRoot,
+                                     atNodes=a.deflection != 0)
 
     # Box: x in [x0, x1], y in [0, y1], z in [-z, z]; the root plane has the
     # hole of the prism layers' outer section
@@ -204,9 +250,9 @@ def main():
     nPrism, nTet = (len(gmsh.model.mesh.getElementsByType(t)[0]) for t in (6, 4))
     print("flapMesh: %s mesh, %d points, %d cells (%d prisms + %d tetrahedra), wing %g/%g m,"
           " hinge %g m, far %g m, %d layers, first height %g m, total %g m, box %s;"
-          " hinge line x = %g, z = 0"
+          " hinge line x = %g, z = 0, flap deflected %g deg"
           % (level, nPoints, nPrism + nTet, nPrism, nTet, hw, he, hh, hf, nl, heights[0],
-             heights[-1], " ".join("%g" % v for v in a.box), HINGE_X))
+             heights[-1], " ".join("%g" % v for v in a.box), HINGE_X, a.deflection))
     gmsh.finalize()
 
 
