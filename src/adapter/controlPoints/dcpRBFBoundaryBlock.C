@@ -57,11 +57,21 @@ dcprbf::Values Foam::dcpRBFBoundaryBlock::values
     bool& stored
 ) const
 {
+    // the stored product of the same interpolant and budget kept (the
+    // boundary error's check, then the correction, in one step)
+    if (s.identity() == keptIdentity_ && budget == keptBudget_)
+    {
+        stored = true;
+        return kept_;
+    }
     dcprbf::Values v;
     stored = stored_.prepare(s.centres(), budget);
     if (stored)
     {
         stored_.evaluate(s.weights(), s.polynomialCoeffs(), v);
+        kept_ = v;
+        keptIdentity_ = s.identity();
+        keptBudget_ = budget;
     }
     else
     {

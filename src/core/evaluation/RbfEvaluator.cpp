@@ -2,6 +2,7 @@
 #include "RbfEvaluator.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -28,8 +29,16 @@ RbfEvaluator::RbfEvaluator
 :
     kernel_(kernel),
     polynomial_(polynomial),
-    method_(Method::Auto)
+    method_(Method::Auto),
+    identity_(nextIdentity())
 {}
+
+
+std::uint64_t RbfEvaluator::nextIdentity()
+{
+    static std::atomic<std::uint64_t> last{0};
+    return ++last;
+}
 
 
 void RbfEvaluator::assign
@@ -57,6 +66,7 @@ void RbfEvaluator::assign
     centres_ = centres;
     alpha_ = alpha;
     beta_ = beta;
+    identity_ = nextIdentity();
 
     cx_ = centres.col(0);
     cy_ = centres.col(1);

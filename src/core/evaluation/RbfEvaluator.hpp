@@ -20,12 +20,16 @@
 // summed over all centres again. The exact shortcut while the centres stay
 // the same keeps the matrix phi(|x - c_j|) (StoredEvaluation: sparse for
 // compact kernels, within a memory budget). assign() is O(N log N).
+// identity() names the interpolant assigned: equal identities, the same
+// centres, weights and polynomial coefficients, so that a caller may keep
+// values it computed from them (dcpRBFBoundaryBlock).
 #pragma once
 
 #include "LinearPolynomial.hpp"
 #include "PointTree.hpp"
 #include "RadialKernel.hpp"
 
+#include <cstdint>
 #include <memory>
 
 namespace dcprbf
@@ -80,6 +84,10 @@ public:
     const Eigen::MatrixX3d& polynomialCoeffs() const { return beta_; }
     const LinearPolynomial& polynomial() const { return polynomial_; }
 
+    //- The interpolant's identity: new at every construction and assign()
+    //  (unique over all evaluators of the process), kept by copies
+    std::uint64_t identity() const { return identity_; }
+
 private:
     void evaluateTree(const double* x, std::size_t n, double* out) const;
     void evaluateDense(const double* x, std::size_t n, double* out) const;
@@ -87,9 +95,13 @@ private:
     //- out[d] += p(x)_d
     void addPolynomial(const double* x, double* out) const;
 
+    //- A new identity
+    static std::uint64_t nextIdentity();
+
     RadialKernel kernel_;
     LinearPolynomial polynomial_;
     Method method_;
+    std::uint64_t identity_;
 
     Points centres_;
     Values alpha_;

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <tuple>
 #include <vector>
 
@@ -155,6 +156,29 @@ INSTANTIATE_TEST_SUITE_P
     ::testing::ValuesIn(test::kernelCases()),
     test::kernelCaseName
 );
+
+// identity(): new at every construction and assign() (the same weights
+// assigned again too: a caller keeping values cannot tell), kept by a copy
+TEST(RbfEvaluator, IdentityNewAtEveryAssignKeptByCopies)
+{
+    const Points c = randomPoints(20, 3, 31);
+    const LinearPolynomial frame = LinearPolynomial::boundingBox(true, 3, c);
+    const RadialKernel k = RadialKernel::fromName("WendlandC2", 0.8);
+    RbfEvaluator e(k, frame);
+    const RbfEvaluator other(k, frame);
+    EXPECT_NE(e.identity(), other.identity());
+    const Values alpha = Values::Random(c.rows(), 3);
+    const Eigen::MatrixX3d beta = Eigen::MatrixX3d::Random(frame.size(), 3);
+    std::uint64_t before = e.identity();
+    for (int n = 0; n < 2; ++n)
+    {
+        e.assign(c, alpha, beta);
+        EXPECT_NE(e.identity(), before) << "assignment " << n;
+        before = e.identity();
+    }
+    const RbfEvaluator copy(e);
+    EXPECT_EQ(copy.identity(), e.identity());
+}
 
 TEST(RbfEvaluator, InterpolantUsesEvaluator)
 {
