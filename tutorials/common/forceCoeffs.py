@@ -2,14 +2,16 @@
 """The force coefficients of a case (forceCoeffs' coefficient.dat) and the
 linear interpolation that puts a reference's on another case's times, for
 the tutorials' comparisons with a rigidly moving mesh
-(pitchingAirfoil2D/plotResults.py, flappingWing3D/plotResults.py)."""
+(pitchingAirfoil2D/plotResults.py, flappingWing3D/plotResults.py,
+flap3D/flow/plotFlow.py)."""
 import os
 
 
-def read_coefficients(case="."):
-    """Rows of forceCoeffs' coefficient.dat and a name -> column map."""
+def read_coefficients(case=".", start="0"):
+    """Rows of forceCoeffs' coefficient.dat (of the run started at start)
+    and a name -> column map."""
     rows, header = [], []
-    with open(os.path.join(case, "postProcessing/forceCoeffs/0/coefficient.dat")) as f:
+    with open(os.path.join(case, "postProcessing/forceCoeffs", start, "coefficient.dat")) as f:
         for line in f:
             if line.startswith("#"):
                 header = line[1:].split()

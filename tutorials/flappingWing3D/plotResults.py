@@ -26,6 +26,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from dcpRBFShare import describe, share  # noqa: E402
 from forceCoeffs import interpolate, read_coefficients  # noqa: E402
 from meshCut import plotCuts  # noqa: E402
 
@@ -144,30 +145,6 @@ def compare(omega, tolerance, t_from):
     return ok
 
 
-def share():
-    """dcpRBF's newPoints() over the solver's whole run, from dcpRBF.dat
-    and the log's last ExecutionTime."""
-    dat = "postProcessing/dcpRBF/0/dcpRBF.dat"
-    logs = [f for f in os.listdir(".") if f.startswith("log.pimpleFoam")]
-    if not os.path.exists(dat) or not logs:
-        return
-    header, total, n = [], 0.0, 0
-    for line in open(dat):
-        if line.startswith("#"):
-            header = line[1:].split()
-            continue
-        v = line.split()
-        total += sum(float(v[header.index(c)]) for c in
-                     ("swapTime", "selectTime", "interpolateTime", "guardTime", "pointsTime",
-                      "measureTime"))
-        n += 1
-    run = re.findall(r"^ExecutionTime = (\S+) s", open(logs[0]).read(), re.M)
-    if run and n:
-        print("dcpRBF share: newPoints() %.3f s in %d steps, %.2f ms a step, %.2f %% of "
-              "pimpleFoam's %.1f s" % (total, n, 1000*total/n, 100*total/float(run[-1]),
-                                      float(run[-1])))
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--tolerance", type=float, default=0.02,
@@ -179,7 +156,9 @@ def main():
     _, _, omega = kinematics()
     plot_cut(omega)
     print("wrote images/cut.png")
-    share()
+    measured = share()
+    if measured:
+        print("dcpRBF share: " + describe(measured))
     if os.path.isdir("rigid"):
         ok = compare(omega, a.tolerance, a.t_from)
         print("wrote images/forces.png")
