@@ -85,7 +85,7 @@ public:
     const LinearPolynomial& polynomial() const { return polynomial_; }
 
     //- The interpolant's identity: new at every construction and assign()
-    //  (unique over all evaluators of the process), kept by copies
+    //  (unique over all evaluators of the process), kept by a move
     std::uint64_t identity() const { return identity_; }
 
 private:

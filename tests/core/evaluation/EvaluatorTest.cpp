@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 using namespace dcprbf;
@@ -158,8 +159,8 @@ INSTANTIATE_TEST_SUITE_P
 );
 
 // identity(): new at every construction and assign() (the same weights
-// assigned again too: a caller keeping values cannot tell), kept by a copy
-TEST(RbfEvaluator, IdentityNewAtEveryAssignKeptByCopies)
+// assigned again too: a caller keeping values cannot tell), kept by a move
+TEST(RbfEvaluator, IdentityNewAtEveryAssignKeptByAMove)
 {
     const Points c = randomPoints(20, 3, 31);
     const LinearPolynomial frame = LinearPolynomial::boundingBox(true, 3, c);
@@ -176,8 +177,8 @@ TEST(RbfEvaluator, IdentityNewAtEveryAssignKeptByCopies)
         EXPECT_NE(e.identity(), before) << "assignment " << n;
         before = e.identity();
     }
-    const RbfEvaluator copy(e);
-    EXPECT_EQ(copy.identity(), e.identity());
+    const RbfEvaluator moved(std::move(e));
+    EXPECT_EQ(moved.identity(), before);
 }
 
 TEST(RbfEvaluator, InterpolantUsesEvaluator)
