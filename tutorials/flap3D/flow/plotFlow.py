@@ -5,7 +5,8 @@ start with "flow", and the pictures (matplotlib).
 
 - serial vs parallel (par/) and the restart (restart/) vs the uninterrupted
   run: the largest differences of Cl, Cd and CmPitch over the steps both
-  have, and each relative to the serial run's largest |value|;
+  have (parallel: also over the last period, past the impulsive start),
+  each relative to the serial run's largest |value|;
 - the period means and peaks of the last whole period;
 - dcpRBF's share of a step (serial and parallel);
 - the flap held at 20 deg, steady (steady/): Cl, Cd and CmPitch on the
@@ -44,9 +45,10 @@ def series(case=".", start="0"):
     return {round(r[0], 6): tuple(r[col[n]] for n in NAMES) for r in rows}
 
 
-def compare(what, ref, other):
-    """The largest differences of other from ref over their common steps."""
-    common = sorted(set(ref) & set(other))
+def compare(what, ref, other, after=0.0):
+    """The largest differences of other from ref over their common steps
+    after t = after."""
+    common = sorted(t for t in set(ref) & set(other) if t > after)
     if not common:
         print("flow %s: no common steps" % what)
         return
@@ -146,6 +148,9 @@ def main():
     if os.path.isdir("par/postProcessing"):
         par = series("par")
         compare("parallel vs serial", ref, par)
+        period = 2*math.pi/OMEGA
+        if max(ref) > period:
+            compare("parallel vs serial, the last period", ref, par, max(ref) - period)
         runs.append(("2 processors", par, "r--"))
     starts = os.listdir("restart/postProcessing/forceCoeffs") if os.path.isdir(
         "restart/postProcessing/forceCoeffs") else []
