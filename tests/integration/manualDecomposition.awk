@@ -84,8 +84,10 @@ END {
             ", owner " n["owner"] ", points " nPoints ")" > "/dev/stderr"
         exit 1
     }
+    # (the last cell may own no face: a gmsh mesh's)
     nCells = 0
     for (f = 0; f < nFaces; f++) if (own[f] + 1 > nCells) nCells = own[f] + 1
+    for (f = 0; f < nInternal; f++) if (nei[f] + 1 > nCells) nCells = nei[f] + 1
 
     # patch faces: their points and their owner cells, per role
     for (p in pn) {

@@ -191,3 +191,48 @@ test_flap3D_flow_parallelEqualsSerialRestartEqualsUninterrupted() {
     [ "$(countLines '^flow dcpRBF share' "$plots")" -eq 2 ] || fail "dcpRBF's share not reported"
 }
 
+
+# A roll of the whole wing (wing, hinge and flap turning 2 deg about the x
+# axis through the root's chord line, by t = 20 in 4 steps) moves the
+# interpolated points of the symmetry plane y = 0 off it, which its
+# condition takes back. On 2 processors cut at x = 0.75, every cell that
+# touches the plane by a vertex or an edge only sent to the other processor
+# (manualDecomposition.awk), a processor holds points of the plane without
+# any of its faces: the processors agree on the constrained displacement,
+# the points are the serial ones (1e-10) and no point of the plane leaves it
+test_flap3D_symmetryPointWithoutItsFace_parallelEqualsSerial() {
+    flap3DCoarse || return 1
+    writeFile 0/pointDisplacement pointVectorField <<'EOT'
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    "(wing|hinge|flap)"
+    {
+        type solidBodyMotionDisplacement;
+        solidBodyMotionFunction oscillatingRotatingMotion;
+        origin (0 0 0); amplitude (2 0 0); omega 0.0785398163;
+        value uniform (0 0 0);
+    }
+    symmetry { type symmetryPlane; }
+    farfield { type fixedValue; value uniform (0 0 0); }
+}
+EOT
+    foamDictionary constant/dynamicMeshDict -entry dcpRBFCoeffs/movingPatches -set "(wing hinge flap)" > /dev/null
+    foamDictionary constant/dynamicMeshDict -entry dcpRBFCoeffs/staticPatches -set "(farfield)" > /dev/null
+    manualDecomposition 0.75 "wing hinge flap" "symmetry" static || return 1
+    parallelEqualsSerial 20 "$manualDecompositionDict" || return 1
+    local p
+    for p in wing hinge flap
+    do
+        awk -v patch=$p -f "$here/cases/patchPoints.awk" constant/polyMesh/boundary constant/polyMesh/faces
+    done | sort -un > wing.labels
+    awk -v patch=symmetry -f "$here/cases/patchPoints.awk" constant/polyMesh/boundary constant/polyMesh/faces \
+        | sort -un > symmetry.labels
+    # (the root section's points roll with the wing, out of the plane)
+    awk 'FILENAME == ARGV[1] { wing[$1 + 1] = 1; next }
+        FILENAME == ARGV[2] { if (!(($1 + 1) in wing)) on[$1 + 1] = 1; next }
+        /^\(.*\)$/ && NF == 3 { gsub(/[()]/, ""); k++; if (k in on) { n++; if ($2 > 1e-12 || $2 < -1e-12) off++ } }
+        END { printf "%d points of the symmetry plane off the wing, %d off y = 0\n", n, off; exit !(n > 100 && off == 0) }' \
+        wing.labels symmetry.labels par/20/polyMesh/points || fail "points of the symmetry plane left it on 2 processors"
+}

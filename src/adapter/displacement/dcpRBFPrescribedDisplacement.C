@@ -11,6 +11,8 @@ License
 #include "pointConstraints.H"
 #include "syncTools.H"
 #include "emptyPolyPatch.H"
+#include "emptyPointPatch.H"
+#include "pointMesh.H"
 
 #include <cstring>
 
@@ -64,6 +66,50 @@ Foam::dcpRBFPrescribedDisplacement::dcpRBFPrescribedDisplacement
         if (mark[pointi]) finished.append(pointi);
     }
     finishedPoints_.transfer(finished);
+    collectCoupledConstraints();
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dcpRBFPrescribedDisplacement::collectCoupledConstraints()
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    // every point of every constraint patch (pointConstraints: the patches'
+    // edge points only), combined over the processors sharing it
+    const pointBoundaryMesh& pbm = pointMesh::New(mesh_).boundary();
+    List<pointConstraint> constraints(mesh_.nPoints());
+    for (const pointPatch& pp : pbm)
+    {
+        if (pp.coupled() || isA<emptyPointPatch>(pp))
+        {
+            continue;
+        }
+        const labelList& meshPoints = pp.meshPoints();
+        forAll(meshPoints, i)
+        {
+            pp.applyConstraint(i, constraints[meshPoints[i]]);
+        }
+    }
+    syncTools::syncPointList
+    (
+        mesh_, constraints, combineConstraintsEqOp(), pointConstraint()
+    );
+    DynamicList<label> points;
+    DynamicList<pointConstraint> kept;
+    for (const label pointi : mesh_.globalData().coupledPatch().meshPoints())
+    {
+        if (constraints[pointi].first() > 0)
+        {
+            points.append(pointi);
+            kept.append(constraints[pointi]);
+        }
+    }
+    coupledConstrainedPoints_.transfer(points);
+    coupledConstraints_.transfer(kept);
 }
 
 
@@ -278,6 +324,14 @@ void Foam::dcpRBFPrescribedDisplacement::constrain()
     (
         mesh_, pointDisplacement.primitiveFieldRef(), maxMagSqrEqOp<vector>()
     );
+    // (the synchronisation took the larger value: a processor's that does
+    // not hold the constraint patch's faces)
+    vectorField& disp = pointDisplacement.primitiveFieldRef();
+    forAll(coupledConstrainedPoints_, i)
+    {
+        vector& d = disp[coupledConstrainedPoints_[i]];
+        d = coupledConstraints_[i].constrainDisplacement(d);
+    }
     pcs.constrainCorners(pointDisplacement);
 }
 
