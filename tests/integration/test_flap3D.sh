@@ -103,7 +103,14 @@ test_flap3D_hingeBlend_meshValidSurfaceAsFormula() {
     grep -q "blendProfile hinge, hinged to [1-9][0-9]* static points" log.moveDynamicMesh \
         || fail "no hinge in the set-up: $(grep -m1 -A1 'rotationInterpolation, 1 body' log.moveDynamicMesh)" || return 1
     meshOkAtEveryTime || return 1
-    surfaceAsFormula 20 40
+    surfaceAsFormula 20 40 || return 1
+    # the flap turns about the span axis: no point moves along the span
+    # (1e-12 m: round-off)
+    paste -d' ' <(awk '/^\(.*\)$/ && NF == 3 { gsub(/[()]/, ""); print }' constant/polyMesh/points) \
+                <(awk '/^\(.*\)$/ && NF == 3 { gsub(/[()]/, ""); print }' 20/polyMesh/points) \
+        | awk '{ d = $5 - $2; if (d < 0) d = -d; if (d > m) m = d; n++ }
+            END { printf "%d points, largest motion along the span %g m\n", n, m; exit !(n > 9000 && m <= 1e-12) }' \
+        || fail "points moved along the span: the hinge blend turns off the hinge's axis"
 }
 
 # The hinge blend on 2 processors split across the span (the wing, the
