@@ -79,12 +79,14 @@ void Foam::dcpRBFPrescribedDisplacement::collectCoupledConstraints()
         return;
     }
     // every point of every constraint patch (pointConstraints: the patches'
-    // edge points only), combined over the processors sharing it
+    // edge points only), combined over the processors sharing it; not the
+    // slip and symmetry conditions' (dcpRBFSlipPatches: their reference
+    // normals, the same on every processor)
     const pointBoundaryMesh& pbm = pointMesh::New(mesh_).boundary();
     List<pointConstraint> constraints(mesh_.nPoints());
     for (const pointPatch& pp : pbm)
     {
-        if (pp.coupled() || isA<emptyPointPatch>(pp))
+        if (pp.coupled() || isA<emptyPointPatch>(pp) || slipPatches_.handles(pp.index()))
         {
             continue;
         }

@@ -23,6 +23,7 @@ missing (par/, restart/, steady/) are left out.
 """
 import math
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "common"))
@@ -36,7 +37,17 @@ import matplotlib.pyplot as plt                         # noqa: E402
 from matplotlib.collections import LineCollection       # noqa: E402
 
 NAMES = ("Cl", "Cd", "CmPitch")
-AMPLITUDE, OMEGA = 20.0, math.pi/16     # constant/flapMotion
+
+
+def flapMotion():
+    """The flap's amplitude [deg] and omega [rad/s] (constant/flapMotion)."""
+    text = open(os.path.join("constant", "flapMotion")).read()
+    amplitude = re.search(r"^amplitude\s+\(\s*\S+\s+(\S+)\s+\S+\s*\)", text, re.M)
+    omega = re.search(r"^omega\s+([-0-9.eE+]+)", text, re.M)
+    return float(amplitude.group(1)), float(omega.group(1))
+
+
+AMPLITUDE, OMEGA = flapMotion()
 
 
 def series(case=".", start="0"):
