@@ -48,6 +48,7 @@ std::vector<badInput> catalogue()
         {"ZeroRadius", mv + st + "supportRadius 0;", "supportRadius"},
         {"NegativeRadius", mv + st + "supportRadius -1;", "supportRadius"},
         {"MissingRadius", mv + st, "Keyword supportRadius missing: a length [m], e.g. supportRadius 2.5; or a factor"},
+        {"MissingRadiusSaysTheUnitHere", mv + st, "supportRadius 5 movingExtent; (here movingExtent is 1"},
         {"UnknownKeyword", mv + st + r + "suportRadius 2;", "suportRadius"},
         {"MisspeltRequiredKeyword", mv + st + "suportRadius 0.5;", "Unknown keyword suportRadius"},
         {"PolynomialNotBool", mv + st + r + "polynomial maybe;", "polynomial"},
