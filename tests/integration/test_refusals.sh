@@ -53,17 +53,6 @@ boundaryField
 EOT
 }
 
-test_wedge_refusedNamingThePatch() {
-    # a 5 deg wedge about the x axis, 0.5 to 1 from it
-    local c=0.9990482 s=0.0436194
-    channelBlock patch wedge "(0 0.5 -0.0218097) (1 0.5 -0.0218097) (1 $c -$s) (0 $c -$s)
-        (0 0.5 0.0218097) (1 0.5 0.0218097) (1 $c $s) (0 $c $s)" 1 || return 1
-    bottomRaised "\"(left|right)\" { type fixedValue; value uniform (0 0 0); }
-    \"(front|back)\" { type wedge; }"
-    dynamicMeshDict "movingPatches (bottom); staticPatches (top left right); supportRadius 1;"
-    refusedWith "front" "wedge"
-}
-
 test_cyclic_refusedNamingThePatch() {
     channelBlock cyclic wall "(0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1)" || return 1
     bottomRaised "\"(left|right)\" { type cyclic; }

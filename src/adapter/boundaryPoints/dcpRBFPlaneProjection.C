@@ -14,33 +14,30 @@ License
 Foam::dcpRBFPlaneProjection::dcpRBFPlaneProjection(const polyMesh& mesh)
 :
     dim_(3),
+    wedge_(false),
     axes_({0, 1, 2}),
     midPlane_(0),
-    backPlane_(0)
+    backPlane_(0),
+    candidateBound_(0)
 {
+    bool wedge = false;
     for (const polyPatch& pp : mesh.boundaryMesh())
     {
-        if (isA<wedgePolyPatch>(pp))
-        {
-            FatalErrorInFunction
-                << "Patch " << pp.name() << " is of type wedge: dcpRBF does"
-                << " not support axisymmetric (wedge) cases. Supported: 3D"
-                << " cases and 2D cases with one empty direction"
-                << exit(FatalError);
-        }
+        wedge = wedge || isA<wedgePolyPatch>(pp);
     }
-    if (mesh.nSolutionD() == 3)
+    wedge_ = wedge;
+    if (!wedge && mesh.nSolutionD() == 3)
     {
         return;
     }
-    if (mesh.nGeometricD() != 2 || mesh.nSolutionD() != 2)
+    if (mesh.nGeometricD() != 2 || (!wedge && mesh.nSolutionD() != 2))
     {
         FatalErrorInFunction
-            << "dcpRBF supports 3D cases and 2D cases with one empty"
-            << " direction; this mesh has " << mesh.nGeometricD()
-            << " geometric and " << mesh.nSolutionD() << " solution"
-            << " directions (axisymmetric wedge or 1D cases are not"
-            << " supported)" << exit(FatalError);
+            << "dcpRBF supports 3D cases, 2D cases with one empty"
+            << " direction and axisymmetric (wedge) ones; this mesh has "
+            << mesh.nGeometricD() << " geometric and " << mesh.nSolutionD()
+            << " solution directions (1D cases are not supported)"
+            << exit(FatalError);
     }
 
     const Vector<label>& geomD = mesh.geometricD();
@@ -54,6 +51,14 @@ Foam::dcpRBFPlaneProjection::dcpRBFPlaneProjection(const polyMesh& mesh)
     const boundBox& bb = mesh.bounds();
     midPlane_ = 0.5*(bb.min()[axes_[2]] + bb.max()[axes_[2]]);
     backPlane_ = bb.min()[axes_[2]];
+    candidateBound_ = midPlane_;
+    if (wedge)
+    {
+        // the centre plane; the axis's points (on both wedge planes, at
+        // the centre plane to round-off) are candidates too
+        backPlane_ = midPlane_;
+        candidateBound_ = midPlane_ + 1e-8*mag(bb.span());
+    }
 }
 
 

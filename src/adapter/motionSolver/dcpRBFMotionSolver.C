@@ -54,8 +54,9 @@ void Foam::dcpRBFMotionSolver::construct()
     Info<< typeName << ": " << c.boundaryPoints().size() << " boundary points ("
         << word(s.kernel().name()) << ", supportRadius "
         << s.kernel().radius() << ", polynomial "
-        << Switch(s.polynomial()) << ", " << c.dim()
-        << "D, selection " << s.selection().selectionName() << "), "
+        << Switch(s.polynomial()) << ", " << c.dim() << "D"
+        << (c.projection().wedge() ? " in the wedge's centre plane" : "")
+        << ", selection " << s.selection().selectionName() << "), "
         << region.size() << " cells in reach, " << region.nChecked()
         << " checked at every step (every cell whose points can move)"
         << endl;
