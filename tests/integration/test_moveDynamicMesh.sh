@@ -97,6 +97,42 @@ test_airfoil2D_patchListsInferred_samePointsAsListed() {
     esac
 }
 
+# One word: a dynamicMeshDict with motionSolver dcpRBF and no dcpRBFCoeffs
+# (and the former solver's diffusivity left in it) moves the mesh as
+# dcpRBFCoeffs { supportRadius D; } does, D the reference mesh's diagonal in
+# its plane (the default radius), the patch lists inferred, selection all
+# (102 boundary points, at most maxPoints): the points bit for bit; the log
+# says once what it did not read and that the radius was not given
+test_airfoil2D_noCoeffs_samePointsAsTheDefaultsGiven() {
+    local r t
+    write_motionControls .
+    airfoilMesh 0.04 1.0 || return 1
+    airfoilPointDisplacement 0.698
+    mkdir -p given
+    cp -r constant system 0 given/
+    r=$(awk '/^\(-?[0-9]/ { gsub(/[()]/, ""); if (n++ == 0) { x0 = x1 = $1; y0 = y1 = $2 }
+             if ($1 < x0) x0 = $1; if ($1 > x1) x1 = $1; if ($2 < y0) y0 = $2; if ($2 > y1) y1 = $2 }
+             END { printf "%.17g", sqrt((x1 - x0)^2 + (y1 - y0)^2) }' constant/polyMesh/points)
+    writeFile constant/dynamicMeshDict dictionary <<'EOT'
+dynamicFvMesh dynamicMotionSolverFvMesh;
+motionSolverLibs ("libdcpRBF.so");
+motionSolver dcpRBF;
+diffusivity quadratic inverseDistance (wing);
+EOT
+    run moveDynamicMesh || return 1
+    [ "$(grep -c "^dcpRBF: no dcpRBFCoeffs in dynamicMeshDict: every setting at its default (diffusivity: not dcpRBF's, not read)" log.moveDynamicMesh)" -eq 1 ] \
+        || fail "no single line on the missing dcpRBFCoeffs: $(grep -m1 'dcpRBFCoeffs' log.moveDynamicMesh)" || return 1
+    grep -q "supportRadius [0-9.e+]* (not given: the mesh's extent), .*selection all)" log.moveDynamicMesh \
+        || fail "the default radius not said: $(grep -m1 'boundary points (' log.moveDynamicMesh)" || return 1
+    (
+        cd given || exit 1
+        dynamicMeshDict "supportRadius $r;"
+        run moveDynamicMesh || exit 1
+    ) || fail "the case with the radius given failed (see given/log.moveDynamicMesh)" || return 1
+    t=$(writtenTimes . | sort -g | tail -n 1)
+    pointsAgree "$t/polyMesh/points" "given/$t/polyMesh/points" 0 "no dcpRBFCoeffs vs supportRadius $r at t = $t"
+}
+
 test_hollowCube3D_rotate30deg_meshValidEveryStep() {
     write_hollowCube . 6
     run blockMesh || return 1

@@ -21,12 +21,12 @@ Foam::dcpRBFContext::dcpRBFContext
 )
 :
     mesh_(mesh),
-    coeffs_(coeffs),
+    coeffs_(dcpRBFSettings::coeffsIn(coeffs)),
     stepMesh_(pointDisplacement),
     points0_(points0),
     debug_(debug),
-    region_(mesh, coeffs, solverDict),
-    settings_(coeffs, mesh, points0, region_.nBorder() > 0),
+    region_(mesh, coeffs_, solverDict),
+    settings_(coeffs_, mesh, points0, region_.nBorder() > 0),
     projection_(mesh),
     boundaryPoints_
     (
@@ -36,7 +36,9 @@ Foam::dcpRBFContext::dcpRBFContext
     evalPoints_(projection_.toCore(points0)),
     distinct_(evalPoints_),
     twoDPoints_(mesh)
-{}
+{
+    settings_.chooseDefaults(boundaryPoints_.size());
+}
 
 
 // ************************************************************************* //

@@ -46,17 +46,49 @@ void Foam::dcpRBFMotionSolver::construct()
     quality_.rankBest(swapRule_->readsBestCells());
 
     setThreads();
-    prescribed_.checkPatches(coeffDict());
+    prescribed_.checkPatches(context_.coeffs());
     checkSetSize();
     checkRegion();
 
     const dcpRBFSettings& s = c.settings();
+    if (!found(typeName + "Coeffs"))
+    {
+        // and what a former motion solver left (diffusivity, component)
+        const wordHashSet openfoams
+        ({
+            "FoamFile", "dynamicFvMesh", "dynamicFvMeshLibs", "motionSolver",
+            "motionSolverLibs", "solver", "libs", "cellZone", "cellSet"
+        });
+        string others;
+        for (const entry& e : *this)
+        {
+            const word& k = e.keyword();
+            if (!openfoams.found(k) && !(e.isDict() && k.ends_with("Coeffs")))
+            {
+                others += (others.empty() ? "" : " ") + k;
+            }
+        }
+        Info<< typeName << ": no " << typeName << "Coeffs in " << name()
+            << ": every setting at its default";
+        if (others.size())
+        {
+            Info<< " (" << others.c_str() << ": not dcpRBF's, not read)";
+        }
+        Info<< endl;
+    }
     Info<< typeName << ": " << c.boundaryPoints().size() << " boundary points ("
         << word(s.kernel().name()) << ", supportRadius "
-        << s.kernel().radius() << ", polynomial "
+        << s.kernel().radius()
+        << (s.radiusDefault() ? " (not given: the mesh's extent)" : "")
+        << ", polynomial "
         << Switch(s.polynomial()) << ", " << c.dim() << "D"
         << (c.projection().wedge() ? " in the wedge's centre plane" : "")
-        << ", selection " << s.selection().selectionName() << "), "
+        << ", selection " << s.selection().selectionName()
+        << (
+               s.selection().selectionGiven || !s.selection().swaps()
+             ? "" : " (not given: more boundary points than maxPoints)"
+           )
+        << "), "
         << region.size() << " cells in reach, " << region.nChecked()
         << " checked at every step (every cell whose points can move)"
         << endl;
@@ -76,7 +108,7 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
     ),
     inNewPoints_(false),
     nReusedPoints_(0),
-    coeffsAtStart_(coeffDict())
+    coeffsAtStart_(context_.coeffs())
 {
     construct();
 }
@@ -97,7 +129,7 @@ Foam::dcpRBFMotionSolver::dcpRBFMotionSolver
     ),
     inNewPoints_(false),
     nReusedPoints_(0),
-    coeffsAtStart_(coeffDict())
+    coeffsAtStart_(context_.coeffs())
 {
     construct();
 }
@@ -291,7 +323,10 @@ bool Foam::dcpRBFMotionSolver::read()
     }
     const string changes
     (
-        dcpRBFSettings::changedEntries(coeffsAtStart_, coeffDict())
+        dcpRBFSettings::changedEntries
+        (
+            coeffsAtStart_, dcpRBFSettings::coeffsIn(coeffDict())
+        )
     );
     if (changes.size())
     {

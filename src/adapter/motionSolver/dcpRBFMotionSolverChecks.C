@@ -78,7 +78,7 @@ void Foam::dcpRBFMotionSolver::checkSetSize() const
     {
         return;
     }
-    const dictionary& dict = coeffDict().subDict("controlPoints");
+    const dictionary dict(context_.coeffs().subOrEmptyDict("controlPoints"));
     const label dim = context_.dim();
     const label fewest = settings().polynomial() ? dim + 1 : 1;
     if (sel.maxPoints < fewest)
@@ -155,7 +155,7 @@ void Foam::dcpRBFMotionSolver::checkRegion() const
 {
     if (quality_.region().size() == 0)
     {
-        FatalIOErrorInFunction(coeffDict())
+        FatalIOErrorInFunction(context_.coeffs())
             << "supportRadius " << Foam::name(settings().kernel().radius()).c_str() << " reaches"
             << " no cell centre from the moving patches' points: the cells"
             << " touching them would take the whole motion (and fold as"

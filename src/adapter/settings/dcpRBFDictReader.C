@@ -345,27 +345,14 @@ Foam::scalar Foam::dcpRBFDictReader::getLength
     const dcpRBFKeyword& k,
     const word& unitWord,
     const std::function<scalar()>& unit,
-    const scalar size
+    const scalar size,
+    const scalar deflt
 ) const
 {
     const word keyword(k.name);
     if (!dict_.found(keyword))
     {
-        // the unit's size here, and what the value is in practice
-        const scalar u = unit();
-        OStringStream here;
-        here.precision(3);
-        if (u > 0)
-        {
-            here<< " (here " << unitWord << " is " << u << " m";
-            if (k.advice) here<< "; take " << k.advice;
-            here<< ")";
-        }
-        FatalIOErrorInFunction(dict_)
-            << "Keyword " << keyword << " missing: a length [m], e.g. "
-            << keyword << " 2.5; or a factor of " << unitWord << ", e.g. "
-            << keyword << " 5 " << unitWord << ";" << here.str().c_str()
-            << exit(FatalIOError);
+        return deflt;
     }
     ITstream& is = dict_.lookup(keyword);
     if (is.empty() || !is[0].isNumber())

@@ -153,14 +153,14 @@ Foam::dcpRBFKeyword Foam::dcpRBFKeyword::integer
 Foam::dcpRBFKeyword Foam::dcpRBFKeyword::length
 (
     const char* dictionary, const char* name, const double lo,
-    const double hi, const char* condition, const char* advice,
-    const char* help
+    const double hi, const char* defaultText, const char* condition,
+    const char* advice, const char* help
 )
 {
     return
     {
         dictionary, name, valueType::length, 0, nullptr, nullptr, lo, hi,
-        true, true, help, scope::always, "required", condition, nullptr,
+        true, true, help, scope::always, defaultText, condition, nullptr,
         advice
     };
 }

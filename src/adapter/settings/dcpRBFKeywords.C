@@ -64,6 +64,8 @@ const std::vector<K>& table()
     K::length
     (
         coeffs, "supportRadius", 1e-9, 1e9,
+        "the reference mesh's bounding-box diagonal (in the plane of a 2D or"
+        " wedge mesh)",
         "reaching at least one cell centre from the moving patches",
         "several times the largest displacement",
         "the kernel's radius (a global function's length scale)"
@@ -79,7 +81,7 @@ const std::vector<K>& table()
     ).alsoNeeds("`TPS` needs `true`"),
     K::other
     (
-        coeffs, "controlPoints", type::subDict, "`{ selection all; }`",
+        coeffs, "controlPoints", type::subDict, "`{}` (`selection`'s default)",
         "the keywords of [`controlPoints`](#controlpoints)",
         "how the control points are chosen"
     ),
@@ -158,6 +160,10 @@ const std::vector<K>& table()
     (
         cp, "selection", "all",
         "all boundary points, a greedy set, or a greedy set with swaps"
+    ).defaultIs
+    (
+        "`all` up to 2000 boundary points (`maxPoints`' default), `dynamic`"
+        " at its defaults above"
     ),
     K::real
     (

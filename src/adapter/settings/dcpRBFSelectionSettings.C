@@ -69,6 +69,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     const dcpRBFDictReader r(dict);
     r.checkKeywordsOf("controlPoints");
     selection = r.getEnum(key("selection"), modeNames);
+    selectionGiven = dict.found("selection");
     tolerance = r.getScalar(key("tolerance"));
     minPoints = r.getLabel(key("minPoints"));
     maxPoints = r.getLabel(key("maxPoints"), max(label(key("maxPoints").deflt), minPoints));

@@ -83,42 +83,58 @@ const choicesFrom functionChoices
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::dictionary Foam::dcpRBFSettings::coeffsIn(const dictionary& dict)
+{
+    // Without a dcpRBFCoeffs sub-dictionary OpenFOAM's coeffDict() is the
+    // motion solver's whole dictionary
+    if (!dict.found("motionSolver") && !dict.found("solver") && !dict.found("dynamicFvMesh"))
+    {
+        return dict;
+    }
+    for (const entry& e : dict)
+    {
+        // a misspelt one (in any case: dcpRbfCoeffs, DCPRBFCoeffs, ...)
+        std::string lower(e.keyword());
+        for (char& c : lower)
+        {
+            c = char(std::tolower(static_cast<unsigned char>(c)));
+        }
+        if
+        (
+            e.isDict() && lower.compare(0, 6, "dcprbf") == 0
+         && lower != "dcprbffvmeshcoeffs"
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "Found " << e.keyword() << " in " << dict.name()
+                << ": the name is dcpRBFCoeffs" << exit(FatalIOError);
+        }
+    }
+    // dcpRBF's keywords outside it (cellZone is also the motion solver's)
+    for (const word& name : dcpRBFKeywords::names("dcpRBFCoeffs"))
+    {
+        if (name != "cellZone" && dict.found(name))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword " << name << " outside dcpRBFCoeffs in "
+                << dict.name() << ": dcpRBF's settings go in it, e.g." << nl
+                << "    dcpRBFCoeffs" << nl << "    {" << nl
+                << "        " << name << " ...;" << nl << "    }" << nl
+                << "(without dcpRBFCoeffs every setting is at its default)"
+                << exit(FatalIOError);
+        }
+    }
+    dictionary none;
+    none.name() = dict.name() + ".dcpRBFCoeffs";
+    return none;
+}
+
+
 const Foam::dictionary& Foam::dcpRBFSettings::checkKeywords
 (
     const dictionary& dict
 )
 {
-    // Without a dcpRBFCoeffs sub-dictionary the motion solver is given the
-    // whole dynamicMeshDict: say so, not "unknown keyword dynamicFvMesh"
-    if (dict.found("motionSolver") || dict.found("solver") || dict.found("dynamicFvMesh"))
-    {
-        string near;
-        for (const entry& e : dict)
-        {
-            // (in any case: dcpRbfCoeffs, DCPRBFCoeffs, ...)
-            std::string lower(e.keyword());
-            for (char& c : lower)
-            {
-                c = char(std::tolower(static_cast<unsigned char>(c)));
-            }
-            if
-            (
-                e.isDict() && lower.compare(0, 6, "dcprbf") == 0
-             && lower != "dcprbffvmeshcoeffs"
-            )
-            {
-                near = " (found " + e.keyword() + ": the name is dcpRBFCoeffs)";
-            }
-        }
-        FatalIOErrorInFunction(dict)
-            << "No dcpRBFCoeffs sub-dictionary in " << dict.name() << near.c_str()
-            << ". The dcpRBF settings go in it, e.g." << nl
-            << "    dcpRBFCoeffs" << nl << "    {" << nl
-            << "        movingPatches (wing);" << nl
-            << "        staticPatches (inlet outlet);" << nl
-            << "        supportRadius 2.5;" << nl << "    }" << nl
-            << exit(FatalIOError);
-    }
     dcpRBFDictReader(dict).checkKeywordsOf("dcpRBFCoeffs");
     return dict;
 }
@@ -138,6 +154,16 @@ Foam::scalar Foam::dcpRBFSettings::movingExtent
         bb.add(points0, mesh.boundaryMesh()[patchi].meshPoints());
     }
     bb.reduce();
+    return inPlane(mesh, bb);
+}
+
+
+Foam::scalar Foam::dcpRBFSettings::inPlane
+(
+    const polyMesh& mesh,
+    const boundBox& bb
+)
+{
     vector span(bb.span());
     for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
     {
@@ -154,13 +180,15 @@ Foam::scalar Foam::dcpRBFSettings::readRadius
     const pointField& points0
 ) const
 {
-    // (within the table's bounds in units of the mesh's size)
+    // (within the table's bounds in units of the mesh's size; not given:
+    // the reference mesh's extent, in the plane of a 2D or wedge mesh: the
+    // same on a restart)
     return
         r.getLength
         (
             key("supportRadius"), "movingExtent",
             [&]() { return movingExtent(mesh, points0); },
-            mag(mesh.bounds().span())
+            mag(mesh.bounds().span()), inPlane(mesh, boundBox(points0, true))
         );
 }
 
@@ -293,6 +321,7 @@ Foam::dcpRBFSettings::dcpRBFSettings
     movingPatchIDs_(patchList(checkKeywords(dict), mesh, true)),
     staticPatchIDs_(patchList(dict, mesh, false)),
     patchesInferred_(!dict.found("movingPatches") && !dict.found("staticPatches")),
+    radiusDefault_(!dict.found("supportRadius")),
     kernel_(readKernel(dcpRBFDictReader(dict), mesh, points0)),
     polynomial_(dcpRBFDictReader(dict).getSwitch(key("polynomial")))
 {
