@@ -210,6 +210,45 @@ TEST(Region, FrameTransformsTheRegion)
 }
 
 
+// A solid-body frame alone (every patch fixedValue: no moving patch, given
+// as movingPatches () or inferred): the points are the frame's transform of
+// the reference points, the RBF's part zero
+TEST(Region, FrameAloneNeedsNoMovingPatch)
+{
+    const std::string frame =
+        " frame { solidBodyMotionFunction rotatingMotion; rotatingMotionCoeffs"
+        " { origin (0.5 0.25 0); axis (0 0 1); omega 0.3; } }";
+    for (const std::string lists : {"", "movingPatches (); staticPatches (top bottom left right);"})
+    {
+        SCOPED_TRACE(lists.empty() ? "inferred" : lists);
+        testCase c(2, 20, lists + frame);
+        autoPtr<motionSolver> ms(select(c));
+        const pointField p0(refCast<dcpRBFMotionSolver>(ms()).points0());
+        ++c.runTime();
+        const pointField q(ms->newPoints());
+        const scalar angle = 0.3*c.runTime().value();
+        ASSERT_GT(angle, 0);
+        scalar err = 0;
+        forAll(q, i)
+        {
+            const vector r(p0[i] - vector(0.5, 0.25, 0));
+            const vector expected
+            (
+                vector(0.5, 0.25, 0)
+              + vector
+                (
+                    Foam::cos(angle)*r.x() - Foam::sin(angle)*r.y(),
+                    Foam::sin(angle)*r.x() + Foam::cos(angle)*r.y(),
+                    r.z()
+                )
+            );
+            err = max(err, mag(q[i] - expected));
+        }
+        EXPECT_LT(err, 1e-12);
+    }
+}
+
+
 TEST(Region, OutsideStaysWhereTheMeshHasIt)
 {
     // another zone's solver moved the points outside the region (as under

@@ -153,7 +153,8 @@ void Foam::dcpRBFMotionSolver::setThreads() const
 
 void Foam::dcpRBFMotionSolver::checkRegion() const
 {
-    if (quality_.region().size() == 0)
+    // (no moving patch: a solid-body frame alone, nothing to reach)
+    if (quality_.region().size() == 0 && settings().movingPatchIDs().size())
     {
         FatalIOErrorInFunction(context_.coeffs())
             << "supportRadius " << Foam::name(settings().kernel().radius()).c_str() << " reaches"

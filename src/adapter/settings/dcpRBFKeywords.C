@@ -43,7 +43,8 @@ const std::vector<K>& table()
     (
         coeffs, "movingPatches", type::patches,
         "inferred from the `pointDisplacement` conditions",
-        "a non-empty list; each entry matches at least one patch or group;"
+        "a non-empty list (may be `()` with a `frame`: a solid body alone);"
+        " each entry matches at least one patch or group;"
         " no `empty` or coupled patch; no patch also in `staticPatches`;"
         " both lists or neither",
         "patches whose points follow their pointDisplacement condition"

@@ -28,7 +28,7 @@ Foam::labelList Foam::dcpRBFSettings::patchList
     if (dict.found("movingPatches") || dict.found("staticPatches"))
     {
         return moving
-          ? readPatches(dict, "movingPatches", mesh.boundaryMesh(), false)
+          ? readPatches(dict, "movingPatches", mesh.boundaryMesh(), dict.found("frame"))
           : readPatches(dict, "staticPatches", mesh.boundaryMesh(), true);
     }
     labelList movingIDs, staticIDs;
@@ -104,7 +104,7 @@ void Foam::dcpRBFSettings::inferPatches
         }
         return n;
     };
-    if (movingIDs.empty())
+    if (movingIDs.empty() && !dict.found("frame"))
     {
         FatalIOErrorInFunction(dict)
             << "Keywords movingPatches and staticPatches missing, and no"
