@@ -7,6 +7,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "testHelpers.H"
+#include "dcpRBFSelectionSettings.H"
+#include "IStringStream.H"
 
 #include <gtest/gtest.h>
 
@@ -67,6 +69,28 @@ TEST(Defaults, SelectionAllUpToMaxPointsThenDynamic)
             );
         }
     }
+}
+
+
+// Without maxPoints: 2000, at most the greedy basis's budget (1.25e8
+// numbers) over the candidates, not below 100, at least minPoints; a given
+// maxPoints is kept
+TEST(Defaults, MaxPointsBoundedByTheBasisBudget)
+{
+    const auto chosen = [](const char* text, const label nCandidates)
+    {
+        dcpRBFSelectionSettings s{dictionary(IStringStream(text)())};
+        s.chooseDefault(nCandidates);
+        return s;
+    };
+    EXPECT_EQ(chosen("", 1000).maxPoints, 2000);
+    EXPECT_EQ(chosen("", 1000).selectionName(), word("all"));
+    EXPECT_EQ(chosen("", 50000).maxPoints, 2000);
+    EXPECT_EQ(chosen("", 129002).maxPoints, 968);
+    EXPECT_EQ(chosen("", 129002).selectionName(), word("dynamic"));
+    EXPECT_EQ(chosen("", 100000000).maxPoints, 100);
+    EXPECT_EQ(chosen("selection greedy; maxPoints 1500;", 129002).maxPoints, 1500);
+    EXPECT_EQ(chosen("selection greedy; minPoints 1200;", 129002).maxPoints, 1200);
 }
 
 

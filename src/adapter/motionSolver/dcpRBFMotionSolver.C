@@ -87,8 +87,12 @@ void Foam::dcpRBFMotionSolver::construct()
         << (
                s.selection().selectionGiven || !s.selection().swaps()
              ? "" : " (not given: more boundary points than maxPoints)"
-           )
-        << "), "
+           );
+    if (!s.selection().everyCandidate() && !s.selection().maxPointsGiven)
+    {
+        Info<< ", maxPoints " << s.selection().maxPoints << " (not given)";
+    }
+    Info<< "), "
         << region.size() << " cells in reach, " << region.nChecked()
         << " checked at every step (every cell whose points can move)"
         << endl;

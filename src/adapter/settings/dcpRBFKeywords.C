@@ -183,7 +183,12 @@ const std::vector<K>& table()
     (
         cp, "maxPoints", 2000, 1, unbounded, "at most this many control points"
     ).only(scope::reduced)
-     .defaultIs("`2000`, or `minPoints` if that is larger")
+     .defaultIs
+      (
+          "`2000`, at most 1.25e8 over the boundary points (the greedy"
+          " basis's numbers: 968 for 129,002) but not below 100, at least"
+          " `minPoints`"
+      )
      .alsoNeeds("with the polynomial at least dim+1"),
     K::onOff
     (

@@ -70,6 +70,7 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
     r.checkKeywordsOf("controlPoints");
     selection = r.getEnum(key("selection"), modeNames);
     selectionGiven = dict.found("selection");
+    maxPointsGiven = dict.found("maxPoints");
     tolerance = r.getScalar(key("tolerance"));
     minPoints = r.getLabel(key("minPoints"));
     maxPoints = r.getLabel(key("maxPoints"), max(label(key("maxPoints").deflt), minPoints));
@@ -102,6 +103,20 @@ Foam::dcpRBFSelectionSettings::dcpRBFSelectionSettings(const dictionary& dict)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dcpRBFSelectionSettings::chooseDefault(const label nCandidates)
+{
+    if (!selectionGiven && nCandidates > maxPoints)
+    {
+        selection = mode::dynamic;
+    }
+    if (!maxPointsGiven && nCandidates > 0)
+    {
+        maxPoints =
+            max(minPoints, min(maxPoints, max(label(100), basisBudget/nCandidates)));
+    }
+}
+
 
 void Foam::dcpRBFSelectionSettings::setDependsOn(dictionary& d) const
 {
