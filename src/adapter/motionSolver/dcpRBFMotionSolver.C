@@ -88,9 +88,10 @@ void Foam::dcpRBFMotionSolver::construct()
                s.selection().selectionGiven || !s.selection().swaps()
              ? "" : " (not given: more boundary points than maxPoints)"
            );
-    if (!s.selection().everyCandidate() && !s.selection().maxPointsGiven)
+    if (!s.selection().everyCandidate() && s.selection().maxPointsBounded)
     {
-        Info<< ", maxPoints " << s.selection().maxPoints << " (not given)";
+        Info<< ", maxPoints " << s.selection().maxPoints
+            << " (not given: the greedy basis's budget)";
     }
     Info<< "), "
         << region.size() << " cells in reach, " << region.nChecked()

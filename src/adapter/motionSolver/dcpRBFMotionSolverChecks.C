@@ -65,6 +65,31 @@ const Foam::polyMesh& Foam::dcpRBFMotionSolver::withPointDisplacement
                 << " conditions of the same motion (oscillatingVelocity:"
                 << " oscillatingDisplacement, same amplitude and omega).";
         }
+        // a component solver's scalar field (velocityComponentLaplacian,
+        // displacementComponentLaplacian)
+        const word cmpt(dict.getOrDefault<word>("component", word::null));
+        for (const word field : {"pointMotionU" + cmpt, "pointDisplacement" + cmpt})
+        {
+            if
+            (
+                cmpt.size()
+             && IOobject
+                (
+                    field, mesh.time().timeName(), mesh, IOobject::MUST_READ
+                ).typeHeaderOk<pointScalarField>(false)
+            )
+            {
+                FatalError
+                    << " There is a " << field << " (component " << cmpt
+                    << "), the one component of the point "
+                    << (field[5] == 'M' ? "velocity" : "displacement")
+                    << " that OpenFOAM's component solvers read: write the"
+                    << " vector pointDisplacement with the same motion (a"
+                    << " constant velocity V in x from t = 0 is"
+                    << " uniformFixedValue with table ((0 (0 0 0)) (1 (V 0"
+                    << " 0))); docs/guides/axisymmetric.md).";
+            }
+        }
         FatalError << exit(FatalError);
     }
     return mesh;

@@ -112,8 +112,10 @@ void Foam::dcpRBFSelectionSettings::chooseDefault(const label nCandidates)
     }
     if (!maxPointsGiven && nCandidates > 0)
     {
+        const label before = maxPoints;
         maxPoints =
             max(minPoints, min(maxPoints, max(label(100), basisBudget/nCandidates)));
+        maxPointsBounded = maxPoints < before;
     }
 }
 
