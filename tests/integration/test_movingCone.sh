@@ -8,16 +8,38 @@
 # farFieldMoving) is slip and left out of both lists, fixedWall and left are
 # static.
 
-movingConePlanarCase() {
-    local tut="$FOAM_TUTORIALS/incompressible/pimpleFoam/laminar/movingCone"
-    [ -d "$tut" ] || fail "no OpenFOAM tutorial at $tut (FOAM_TUTORIALS: re-run ./Allwmake)" || return 1
-    mkdir -p system constant
-    cp "$tut/system/fvSchemes" "$tut/system/fvSolution" system/
+# movingConeSettings AXIS FRONTBACK [SELECTION]: what the planar and wedge
+# cases share: the controlDict (100 steps of moveDynamicMesh), the cone's
+# motion and the walls' conditions (the axis and the front and back patches
+# of the types given), dcpRBF's settings; then blockMesh
+movingConeSettings() {
     writeFile system/controlDict dictionary <<'EOT'
 application moveDynamicMesh; startFrom startTime; startTime 0; stopAt endTime;
 endTime 0.0005; deltaT 5e-06; writeControl timeStep; writeInterval 25;
 writeFormat ascii; writePrecision 17; timeFormat general; timePrecision 8;
 EOT
+    writeFile 0/pointDisplacement pointVectorField <<EOT
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    movingWall { type uniformFixedValue; uniformValue table ((0 (0 0 0)) (1 (1 0 0))); value uniform (0 0 0); }
+    "(farField|farFieldMoving)" { type slip; }
+    "(fixedWall|left)" { type fixedValue; value uniform (0 0 0); }
+    axis { type $1; }
+    "(front|back)" { type $2; }
+}
+EOT
+    dynamicMeshDict "movingPatches (movingWall); staticPatches (fixedWall left);
+    supportRadius 0.01; controlPoints { selection ${3:-dynamic}; }"
+    run blockMesh
+}
+
+movingConePlanarCase() {
+    local tut="$FOAM_TUTORIALS/incompressible/pimpleFoam/laminar/movingCone"
+    [ -d "$tut" ] || fail "no OpenFOAM tutorial at $tut (FOAM_TUTORIALS: re-run ./Allwmake)" || return 1
+    mkdir -p system constant
+    cp "$tut/system/fvSchemes" "$tut/system/fvSolution" system/
     # the tutorial's vertices with z = -+0.1 for the back and front planes
     # (the axis points duplicated: 20-23), its blocks and patches
     writeFile system/blockMeshDict dictionary <<'EOT'
@@ -51,21 +73,7 @@ boundary
     front { type empty; faces ((20 21 13 12) (22 23 15 14) (12 13 17 16) (13 14 18 17) (14 15 19 18)); }
 );
 EOT
-    writeFile 0/pointDisplacement pointVectorField <<'EOT'
-dimensions [0 1 0 0 0 0 0];
-internalField uniform (0 0 0);
-boundaryField
-{
-    movingWall { type uniformFixedValue; uniformValue table ((0 (0 0 0)) (1 (1 0 0))); value uniform (0 0 0); }
-    "(farField|farFieldMoving)" { type slip; }
-    "(fixedWall|left)" { type fixedValue; value uniform (0 0 0); }
-    axis { type symmetryPlane; }
-    "(front|back)" { type empty; }
-}
-EOT
-    dynamicMeshDict "movingPatches (movingWall); staticPatches (fixedWall left);
-    supportRadius 0.01; controlPoints { selection ${1:-dynamic}; }"
-    run blockMesh
+    movingConeSettings symmetryPlane empty "$@"
 }
 
 # movingConeWedgeCase [SELECTION]: the tutorial's own wedge mesh (its
@@ -76,26 +84,7 @@ movingConeWedgeCase() {
     [ -d "$tut" ] || fail "no OpenFOAM tutorial at $tut (FOAM_TUTORIALS: re-run ./Allwmake)" || return 1
     mkdir -p system constant
     cp "$tut/system/fvSchemes" "$tut/system/fvSolution" "$tut/system/blockMeshDict" system/
-    writeFile system/controlDict dictionary <<'EOT'
-application moveDynamicMesh; startFrom startTime; startTime 0; stopAt endTime;
-endTime 0.0005; deltaT 5e-06; writeControl timeStep; writeInterval 25;
-writeFormat ascii; writePrecision 17; timeFormat general; timePrecision 8;
-EOT
-    writeFile 0/pointDisplacement pointVectorField <<'EOT'
-dimensions [0 1 0 0 0 0 0];
-internalField uniform (0 0 0);
-boundaryField
-{
-    movingWall { type uniformFixedValue; uniformValue table ((0 (0 0 0)) (1 (1 0 0))); value uniform (0 0 0); }
-    "(farField|farFieldMoving)" { type slip; }
-    "(fixedWall|left)" { type fixedValue; value uniform (0 0 0); }
-    axis { type empty; }
-    "(front|back)" { type wedge; }
-}
-EOT
-    dynamicMeshDict "movingPatches (movingWall); staticPatches (fixedWall left);
-    supportRadius 0.01; controlPoints { selection ${1:-dynamic}; }"
-    run blockMesh
+    movingConeSettings empty wedge "$@"
 }
 
 # onWedgeAndAxis TIME MAXREL: at TIME every point of the wedge mesh is where

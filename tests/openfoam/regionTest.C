@@ -71,6 +71,21 @@ pointField bumpStep(testCase& c, motionSolver& ms)
     return pointField(ms.newPoints());
 }
 
+//- A point turned by angle about (0.5 0.25 0) and z: the frames' transform
+//  (rotatingMotion's, about its origin)
+point turnedByFrame(const point& p, const scalar angle)
+{
+    const vector r(p - vector(0.5, 0.25, 0));
+    return
+        vector(0.5, 0.25, 0)
+      + vector
+        (
+            Foam::cos(angle)*r.x() - Foam::sin(angle)*r.y(),
+            Foam::sin(angle)*r.x() + Foam::cos(angle)*r.y(),
+            r.z()
+        );
+}
+
 //- The points of the zone's cells, and those of the other cells
 void zonePoints(const polyMesh& mesh, const word& zone, boolList& in, boolList& out)
 {
@@ -190,19 +205,7 @@ TEST(Region, FrameTransformsTheRegion)
     label nTurned = 0;
     forAll(q, i)
     {
-        // (rotatingMotion's transform about its origin)
-        const vector r(p[i] - vector(0.5, 0.25, 0));
-        const vector expected
-        (
-            vector(0.5, 0.25, 0)
-          + vector
-            (
-                Foam::cos(angle)*r.x() - Foam::sin(angle)*r.y(),
-                Foam::sin(angle)*r.x() + Foam::cos(angle)*r.y(),
-                r.z()
-            )
-        );
-        err = max(err, mag(q[i] - expected));
+        err = max(err, mag(q[i] - turnedByFrame(p[i], angle)));
         nTurned += mag(q[i] - p[i]) > 1e-6;
     }
     EXPECT_LT(err, 1e-12);
@@ -231,18 +234,7 @@ TEST(Region, FrameAloneNeedsNoMovingPatch)
         scalar err = 0;
         forAll(q, i)
         {
-            const vector r(p0[i] - vector(0.5, 0.25, 0));
-            const vector expected
-            (
-                vector(0.5, 0.25, 0)
-              + vector
-                (
-                    Foam::cos(angle)*r.x() - Foam::sin(angle)*r.y(),
-                    Foam::sin(angle)*r.x() + Foam::cos(angle)*r.y(),
-                    r.z()
-                )
-            );
-            err = max(err, mag(q[i] - expected));
+            err = max(err, mag(q[i] - turnedByFrame(p0[i], angle)));
         }
         EXPECT_LT(err, 1e-12);
     }
