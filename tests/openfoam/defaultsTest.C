@@ -50,7 +50,7 @@ TEST(Defaults, SelectionAllUpToMaxPointsThenDynamic)
     const string walls(" supportRadius 0.5; staticPatches (top left right front back);");
     for (const label n : {6, 20})
     {
-        for (const word given : {word::null, word("all")})
+        for (const word& given : {word::null, word("all")})
         {
             testCase c
             (
