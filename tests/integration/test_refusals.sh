@@ -213,21 +213,3 @@ test_cyclicAMIListed_refused() {
     dynamicMeshDict "movingPatches (bottom); staticPatches (top inlet amiLeft); supportRadius 0.5; cellZone left;"
     refusedWith "staticPatches" "amiLeft" "static without being listed"
 }
-
-# A mesh class that drives a velocity motion solver (interfaceTrackingFvMesh
-# casts its solver to velocityMotionSolver: an abort with a stack trace) is
-# refused at the start, naming the class and what to use
-test_interfaceTrackingFvMesh_refusedNamingVelocityLaplacian() {
-    channelBlock patch wall "(0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1)" || return 1
-    bottomRaised "\"(left|right|front|back)\" { type fixedValue; value uniform (0 0 0); }"
-    writeFile constant/dynamicMeshDict dictionary <<EOT
-dynamicFvMesh interfaceTrackingFvMesh;
-dynamicFvMeshLibs ("libinterfaceTrackingFvMesh.so");
-motionSolverLibs ("libdcpRBF.so");
-motionSolver dcpRBF;
-dcpRBFCoeffs { movingPatches (bottom); staticPatches (top left right front back); supportRadius 1; }
-fsPatchName top;
-EOT
-    refusedWith "dynamicFvMesh interfaceTrackingFvMesh" "velocityMotionSolver" "motionSolver velocityLaplacian"
-    ! grep -q "Attempt to cast" log.moveDynamicMesh || fail "the cast's abort came first"
-}

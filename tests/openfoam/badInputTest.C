@@ -7,6 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "testHelpers.H"
+#include "dcpRBFVelocityMotionSolver.H"
 
 #include <gtest/gtest.h>
 
@@ -287,20 +288,12 @@ TEST(BadInput, UnknownSimdWidthWordIsNamed)
     }
 }
 
-// A velocity solver's case (0/pointMotionU, no 0/pointDisplacement): the
-// error says what dcpRBF reads and names the field it found, not only
-// OpenFOAM's "cannot find file"
-TEST(BadInput, PointMotionUInsteadOfPointDisplacementIsNamed)
+// Neither a point displacement nor a point velocity: the error says what
+// dcpRBF reads, not only OpenFOAM's "cannot find file"
+TEST(BadInput, NoPointDisplacementNorVelocityIsNamed)
 {
     testCase c(2, 3, "movingPatches (bottom); staticPatches (top left right); supportRadius 0.5;");
     rm(c.dir()/"0/pointDisplacement");
-    c.write
-    (
-        "0/pointMotionU", "pointVectorField",
-        "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
-        "boundaryField { \".*\" { type fixedValue; value uniform (0 0 0); }"
-        " \"(front|back)\" { type empty; } }\n"
-    );
     try
     {
         autoPtr<motionSolver> ms(select(c));
@@ -308,11 +301,67 @@ TEST(BadInput, PointMotionUInsteadOfPointDisplacementIsNamed)
     }
     catch (const Foam::error& e)
     {
-        for (const char* says : {"there is none in 0/", "There is a pointMotionU, a point velocity"})
+        for (const char* says : {"pointDisplacement (a pointVectorField", "pointMotionU", "there is neither in 0/"})
         {
             EXPECT_NE(e.message().find(says), std::string::npos) << "message: " << e.message();
         }
     }
+}
+
+// A velocity solver's case (0/pointMotionU, no 0/pointDisplacement):
+// motionSolver dcpRBF selects the velocity-driven solver, a
+// velocityMotionSolver (what interfaceTrackingFvMesh casts to); without
+// patch lists every patch whose velocity condition fixes the value moves
+TEST(Velocity, PointMotionUSelectsTheVelocityDrivenSolver)
+{
+    testCase c(2, 3, "supportRadius 0.5;");
+    rm(c.dir()/"0/pointDisplacement");
+    c.write
+    (
+        "0/pointMotionU", "pointVectorField",
+        "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+        "boundaryField { bottom { type fixedValue; value uniform (0 1 0); }"
+        " \"(top|left)\" { type fixedValue; value uniform (0 0 0); }"
+        " right { type slip; } \"(front|back)\" { type empty; } }\n"
+    );
+    autoPtr<motionSolver> ms(select(c));
+    ASSERT_TRUE(isA<velocityMotionSolver>(ms()));
+    EXPECT_EQ(ms->type(), word("dcpRBFVelocity"));
+    const dcpRBFSettings& s =
+        refCast<const dcpRBFVelocityMotionSolver>(ms()).displacement().settings();
+    const polyBoundaryMesh& patches = c.mesh().boundaryMesh();
+    labelList fixedValues
+    ({
+        patches.findPatchID("bottom"), patches.findPatchID("top"),
+        patches.findPatchID("left")
+    });
+    Foam::sort(fixedValues);
+    EXPECT_EQ(s.movingPatchIDs(), fixedValues);
+    EXPECT_TRUE(s.staticPatchIDs().empty());
+}
+
+// Mesh class interfaceTrackingFvMesh (it sets the free surface's velocity
+// and casts its motion solver to velocityMotionSolver): the velocity-driven
+// solver, a pointDisplacement left in 0/ or not
+TEST(Velocity, InterfaceTrackingMeshClassSelectsTheVelocityDrivenSolver)
+{
+    testCase c(2, 3, "movingPatches (bottom); staticPatches (top left right); supportRadius 0.5;");
+    c.write
+    (
+        "0/pointMotionU", "pointVectorField",
+        "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+        "boundaryField { \".*\" { type fixedValue; value uniform (0 0 0); }"
+        " \"(front|back)\" { type empty; } }\n"
+    );
+    c.write
+    (
+        "constant/dynamicMeshDict", "dictionary",
+        "dynamicFvMesh interfaceTrackingFvMesh;\nmotionSolver dcpRBF;\n"
+        "dcpRBFCoeffs { movingPatches (bottom); staticPatches (top left right);"
+        " supportRadius 0.5; }\n"
+    );
+    autoPtr<motionSolver> ms(select(c));
+    EXPECT_TRUE(isA<velocityMotionSolver>(ms()));
 }
 
 // dynamicMeshDict edited while running (runTimeModifiable: OpenFOAM calls

@@ -15,12 +15,8 @@ namespace Foam
 {
     defineTypeNameAndDebug(dcpRBFMotionSolver, 0);
 
-    addToRunTimeSelectionTable
-    (
-        motionSolver,
-        dcpRBFMotionSolver,
-        dictionary
-    );
+    // (motionSolver dcpRBF: selected in dcpRBFVelocityMotionSolver.C, this
+    // class or the velocity-driven one as the case is)
 
     addToRunTimeSelectionTable
     (

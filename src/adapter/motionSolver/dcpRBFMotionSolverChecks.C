@@ -24,23 +24,6 @@ const Foam::polyMesh& Foam::dcpRBFMotionSolver::withPointDisplacement
     const dictionary& dict
 )
 {
-    // a mesh class that drives a velocity motion solver (it casts its
-    // solver to velocityMotionSolver, which would abort with a stack trace)
-    const word meshClass(dict.getOrDefault<word>("dynamicFvMesh", word::null));
-    if (meshClass == "interfaceTrackingFvMesh")
-    {
-        FatalIOErrorInFunction(dict)
-            << "dynamicFvMesh " << meshClass << " moves its mesh through a"
-            << " velocity motion solver: each step it sets the free surface's"
-            << " point velocity (pointMotionU) and casts the motion solver to"
-            << " velocityMotionSolver. " << typeName << " is a displacement"
-            << " motion solver and cannot serve it. Use motionSolver"
-            << " velocityLaplacian (motionSolverLibs (fvMotionSolvers"
-            << " interfaceTrackingFvMesh)), as its tutorials do (dcpRBF serves"
-            << " the displacement-driven mesh classes: dynamicMotionSolverFvMesh,"
-            << " dynamicMultiMotionSolverFvMesh, dynamicOversetFvMesh, ...)"
-            << exit(FatalIOError);
-    }
     const auto has = [&](const word& name)
     {
         return IOobject
@@ -54,17 +37,10 @@ const Foam::polyMesh& Foam::dcpRBFMotionSolver::withPointDisplacement
             << typeName << " reads the boundary's motion from the point"
             << " displacement field pointDisplacement (a pointVectorField:"
             << " fixedValue, angularOscillatingDisplacement,"
-            << " solidBodyMotionDisplacement, ... on the moving patches),"
-            << " and there is none in " << mesh.time().timeName() << "/.";
-        if (has("pointMotionU"))
-        {
-            FatalError
-                << " There is a pointMotionU, a point velocity, which"
-                << " velocity-based solvers (velocityLaplacian, ...) read:"
-                << " write a pointDisplacement with the displacement"
-                << " conditions of the same motion (oscillatingVelocity:"
-                << " oscillatingDisplacement, same amplitude and omega).";
-        }
+            << " solidBodyMotionDisplacement, ... on the moving patches)"
+            << " or, in a velocity solver's case, from the point velocity"
+            << " pointMotionU (a pointVectorField), and there is neither in "
+            << mesh.time().timeName() << "/.";
         // a component solver's scalar field (velocityComponentLaplacian,
         // displacementComponentLaplacian)
         const word cmpt(dict.getOrDefault<word>("component", word::null));

@@ -41,7 +41,8 @@ Foam::wordList Foam::dcpRBFSettings::classifyPatches
 (
     const pointVectorField& d,
     labelList& movingIDs,
-    labelList& staticIDs
+    labelList& staticIDs,
+    const bool velocity
 )
 {
     const polyBoundaryMesh& patches = d.mesh().mesh().boundaryMesh();
@@ -59,7 +60,7 @@ Foam::wordList Foam::dcpRBFSettings::classifyPatches
         {
             sliding.append(pp.name());
         }
-        else if (pf.type() == "fixedValue")
+        else if (!velocity && pf.type() == "fixedValue")
         {
             still.append(patchi);
         }
@@ -83,9 +84,14 @@ void Foam::dcpRBFSettings::inferPatches
     const bool report
 )
 {
+    // a velocity-driven case's (dcpRBFVelocityMotionSolver): its velocity
+    // conditions, every fixed-value kind moving (a mesh class may set the
+    // values while running)
     const pointVectorField* d =
         mesh.findObject<pointVectorField>("pointDisplacement");
-    if (!d)
+    const pointVectorField* u =
+        d ? nullptr : mesh.findObject<pointVectorField>("pointMotionU");
+    if (!d && !u)
     {
         FatalIOErrorInFunction(dict)
             << "Keywords movingPatches and staticPatches missing, and no"
@@ -94,7 +100,10 @@ void Foam::dcpRBFSettings::inferPatches
             << exit(FatalIOError);
     }
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
-    const wordList sliding(classifyPatches(*d, movingIDs, staticIDs));
+    const wordList sliding
+    (
+        classifyPatches(d ? *d : *u, movingIDs, staticIDs, !d)
+    );
     const auto names = [&patches](const labelList& ids)
     {
         wordList n(ids.size());
@@ -120,9 +129,14 @@ void Foam::dcpRBFSettings::inferPatches
         return;
     }
     Info<< "dcpRBF: movingPatches " << names(movingIDs)
-        << " and staticPatches " << names(staticIDs) << " from the"
-        << " pointDisplacement conditions (fixedValue: static; another kind"
-        << " that fixes the value: moving); ";
+        << " and staticPatches " << names(staticIDs) << " from the "
+        << (
+               d
+             ? "pointDisplacement conditions (fixedValue: static; another kind"
+               " that fixes the value: moving); "
+             : "pointMotionU conditions (every kind that fixes the value:"
+               " moving); "
+           );
     if (sliding.empty())
     {
         Info<< "no sliding patch";
