@@ -262,17 +262,3 @@ test_movingConePlanar_invertedWarningSuggestsWhatIsNotSet() {
     ! grep -q "use selection dynamic" warning.dynamic || fail "dynamic: selection dynamic suggested although set" || return 1
     ! grep -q "use selection dynamic" warning.all || fail "all: selection dynamic suggested (every boundary point is a control point)" || return 1
 }
-
-# The stock tutorial switched by one word (motionSolver dcpRBF, the library
-# loaded; its velocityComponentLaplacian's pointMotionUx left as it is): refused
-# at the start, naming the velocity component found and what to write
-test_movingConeStock_oneWordRefusedNamingTheVelocity() {
-    local tut="$FOAM_TUTORIALS/incompressible/pimpleFoam/laminar/movingCone"
-    [ -d "$tut" ] || fail "no OpenFOAM tutorial at $tut (FOAM_TUTORIALS: re-run ./Allwmake)" || return 1
-    cp -r "$tut/0" "$tut/constant" "$tut/system" .
-    sed -i 's/^motionSolver .*/motionSolver dcpRBF;/; s/^motionSolverLibs .*/motionSolverLibs ("libdcpRBF.so");/' constant/dynamicMeshDict
-    grep -q '^motionSolver dcpRBF;' constant/dynamicMeshDict || fail "could not switch the tutorial's motionSolver" || return 1
-    foamDictionary system/controlDict -entry functions -remove > /dev/null
-    run blockMesh || return 1
-    refusedWith "pointMotionUx (component x)" "write the vector pointDisplacement" "uniformFixedValue"
-}

@@ -1,10 +1,12 @@
 # dcpRBF. Copyright (C) 2026 the dcpRBF authors. GPL-3.0-or-later (see LICENSE).
 # shellcheck shell=bash disable=SC2154 # here, top, work: set by tests/integration/run
-# Integration tests: velocity-driven cases (a pointMotionU and no
+# Integration tests: cases driven by another field than pointDisplacement,
+# switched by one word: a point velocity (a pointMotionU and no
 # pointDisplacement, or a mesh class that sets the point velocity itself,
-# interfaceTrackingFvMesh) switched by one word: motionSolver dcpRBF moves
-# the boundary as velocityLaplacian does (x += deltaT U) and interpolates
-# the rest (dcpRBFVelocityMotionSolver).
+# interfaceTrackingFvMesh: dcpRBFVelocityMotionSolver) and one component of
+# a velocity or displacement (pointMotionUx, pointDisplacementx:
+# dcpRBFComponentMotionSolver). motionSolver dcpRBF moves the boundary as
+# the stock solver does (x += deltaT U) and interpolates the rest.
 
 # oneWordDynamicMeshDict SOLVER [LIBS]: constant/dynamicMeshDict with the
 # motion solver SOLVER and nothing else (dcpRBF: no dcpRBFCoeffs; a stock
@@ -159,4 +161,68 @@ test_sloshing2D_oneWordFreeSurfaceAsVelocityLaplacian() {
     meshOkAtEveryTime || return 1
     patchPointsAgree top 0.4/polyMesh/points ../stock/0.4/polyMesh/points 2e-4 || return 1
     patchPointsAgree bottom 0.4/polyMesh/points constant/polyMesh/points 0
+}
+
+# The stock tutorial movingCone (the wedge, velocityComponentLaplacian x:
+# pointMotionUx, its directional diffusivity left in the dictionary)
+# switched by one word: the cone's points as the stock run's to round-off
+# after 100 steps, the mesh valid, the points on their wedge planes and the
+# axis
+test_movingConeStock_oneWordMovesAsVelocityComponentLaplacian() {
+    local tut="$FOAM_TUTORIALS/incompressible/pimpleFoam/laminar/movingCone"
+    [ -d "$tut" ] || fail "no OpenFOAM tutorial at $tut (FOAM_TUTORIALS: re-run ./Allwmake)" || return 1
+    cp -r "$tut/0" "$tut/constant" "$tut/system" .
+    foamDictionary system/controlDict -entry functions -remove > /dev/null
+    writeFile system/controlDict dictionary <<'EOT'
+application moveDynamicMesh; startFrom startTime; startTime 0; stopAt endTime;
+endTime 0.0005; deltaT 5e-06; writeControl timeStep; writeInterval 50;
+writeFormat ascii; writePrecision 17; timeFormat general; timePrecision 8;
+EOT
+    run blockMesh || return 1
+    mkdir -p stock && cp -r 0 constant system stock/
+    (cd stock && run moveDynamicMesh) || fail "the stock run failed (see stock/log.*)" || return 1
+    sed -i 's/^motionSolver .*/motionSolver dcpRBF;/; s/^motionSolverLibs .*/motionSolverLibs ("libdcpRBF.so");/' constant/dynamicMeshDict
+    grep -q '^motionSolver dcpRBF;' constant/dynamicMeshDict || fail "could not switch the tutorial's motionSolver" || return 1
+    run moveDynamicMesh || return 1
+    grep -q "^dcpRBF: driven by pointMotionUx (component x of the point velocity)" log.moveDynamicMesh \
+        || fail "the component case not said: $(grep -m3 '^dcpRBF' log.moveDynamicMesh)" || return 1
+    meshOkAtEveryTime || return 1
+    onWedgeAndAxis 0.0005 1e-6 || return 1
+    patchPointsAgree movingWall 0.0005/polyMesh/points stock/0.0005/polyMesh/points 1e-12
+}
+
+# The planar cone driven by a displacement component as
+# displacementComponentLaplacian reads it (pointDisplacementx, the component
+# in displacementComponentLaplacianCoeffs), one word: the cone's points as
+# the stock run's
+test_movingConeDisplacementComponent_oneWordMovesAsDisplacementComponentLaplacian() {
+    movingConePlanarCase || return 1
+    rm -f 0/pointDisplacement
+    writeFile 0/pointDisplacementx pointScalarField <<'EOT'
+dimensions [0 1 0 0 0 0 0];
+internalField uniform 0;
+boundaryField
+{
+    movingWall { type uniformFixedValue; uniformValue table ((0 0) (1 1)); value uniform 0; }
+    "(farField|farFieldMoving)" { type slip; }
+    "(fixedWall|left)" { type fixedValue; value uniform 0; }
+    axis { type symmetryPlane; }
+    "(front|back)" { type empty; }
+}
+EOT
+    writeFile constant/dynamicMeshDict dictionary <<'EOT'
+dynamicFvMesh dynamicMotionSolverFvMesh;
+motionSolverLibs ("libdcpRBF.so");
+motionSolver dcpRBF;
+displacementComponentLaplacianCoeffs { component x; diffusivity uniform; applyPointLocation false; }
+EOT
+    mkdir -p stock && cp -r 0 constant system stock/
+    sed -i 's/cellMotionUx/cellDisplacementx/' stock/system/fvSolution
+    sed -i 's/^motionSolver .*/motionSolver displacementComponentLaplacian;/; s/^motionSolverLibs .*/motionSolverLibs (fvMotionSolvers);/' stock/constant/dynamicMeshDict
+    (cd stock && run moveDynamicMesh) || fail "the stock run failed (see stock/log.*)" || return 1
+    run moveDynamicMesh || return 1
+    grep -q "^dcpRBF: driven by pointDisplacementx (component x of the point displacement)" log.moveDynamicMesh \
+        || fail "the component case not said: $(grep -m3 '^dcpRBF' log.moveDynamicMesh)" || return 1
+    meshOkAtEveryTime || return 1
+    patchPointsAgree movingWall 0.0005/polyMesh/points stock/0.0005/polyMesh/points 1e-12
 }

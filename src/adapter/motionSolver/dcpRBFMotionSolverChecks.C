@@ -39,34 +39,11 @@ const Foam::polyMesh& Foam::dcpRBFMotionSolver::withPointDisplacement
             << " fixedValue, angularOscillatingDisplacement,"
             << " solidBodyMotionDisplacement, ... on the moving patches)"
             << " or, in a velocity solver's case, from the point velocity"
-            << " pointMotionU (a pointVectorField), and there is neither in "
-            << mesh.time().timeName() << "/.";
-        // a component solver's scalar field (velocityComponentLaplacian,
-        // displacementComponentLaplacian)
-        const word cmpt(dict.getOrDefault<word>("component", word::null));
-        for (const word field : {"pointMotionU" + cmpt, "pointDisplacement" + cmpt})
-        {
-            if
-            (
-                cmpt.size()
-             && IOobject
-                (
-                    field, mesh.time().timeName(), mesh, IOobject::MUST_READ
-                ).typeHeaderOk<pointScalarField>(false)
-            )
-            {
-                FatalError
-                    << " There is a " << field << " (component " << cmpt
-                    << "), the one component of the point "
-                    << (field[5] == 'M' ? "velocity" : "displacement")
-                    << " that OpenFOAM's component solvers read: write the"
-                    << " vector pointDisplacement with the same motion (a"
-                    << " constant velocity V in x from t = 0 is"
-                    << " uniformFixedValue with table ((0 (0 0 0)) (1 (V 0"
-                    << " 0))); docs/guides/axisymmetric.md).";
-            }
-        }
-        FatalError << exit(FatalError);
+            << " pointMotionU (a pointVectorField), or from one component"
+            << " of either (pointMotionUx, pointDisplacementy, ... with the"
+            << " keyword component, as the component solvers read them), and"
+            << " there is none of them in " << mesh.time().timeName() << "/."
+            << exit(FatalError);
     }
     return mesh;
 }

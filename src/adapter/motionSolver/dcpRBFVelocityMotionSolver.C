@@ -8,12 +8,13 @@ License
 Description
     dcpRBFVelocityMotionSolver, and motionSolver dcpRBF's selection: the
     velocity-driven solver where the case is velocity-driven (drives()),
-    else dcpRBFMotionSolver.
+    the component one where one component drives it
+    (dcpRBFComponentMotionSolver::drives()), else dcpRBFMotionSolver.
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFVelocityMotionSolver.H"
+#include "dcpRBFComponentMotionSolver.H"
 #include "addToRunTimeSelectionTable.H"
-#include "fixedValuePointPatchFields.H"
 #include "valuePointPatchField.H"
 #include "pointFields.H"
 
@@ -30,8 +31,8 @@ namespace Foam
         dictionary
     );
 
-    //- motionSolver dcpRBF: the velocity-driven solver or the displacement
-    //  one, as the case is
+    //- motionSolver dcpRBF: the velocity-driven, component or displacement
+    //  solver, as the case is
     class dcpRBFMotionSolverSelector
     {
         static autoPtr<motionSolver> New
@@ -45,6 +46,13 @@ namespace Foam
                 return autoPtr<motionSolver>
                 (
                     new dcpRBFVelocityMotionSolver(mesh, dict)
+                );
+            }
+            if (dcpRBFComponentMotionSolver::drives(mesh, dict))
+            {
+                return autoPtr<motionSolver>
+                (
+                    new dcpRBFComponentMotionSolver(mesh, dict)
                 );
             }
             return autoPtr<motionSolver>(new dcpRBFMotionSolver(mesh, dict));
@@ -104,55 +112,6 @@ bool Foam::dcpRBFVelocityMotionSolver::drives
 }
 
 
-Foam::pointVectorField Foam::dcpRBFVelocityMotionSolver::displacementField
-(
-    const pointVectorField& pointMotionU,
-    const pointField& points0
-)
-{
-    const pointVectorField::Boundary& conditions = pointMotionU.boundaryField();
-    wordList types(conditions.types());
-    forAll(conditions, patchi)
-    {
-        if (conditions[patchi].fixesValue())
-        {
-            types[patchi] = fixedValuePointPatchVectorField::typeName;
-        }
-    }
-    const polyMesh& mesh = pointMotionU.mesh().mesh();
-    pointVectorField d
-    (
-        IOobject
-        (
-            "pointDisplacement",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false           // the displacement solver's copy registered
-        ),
-        pointMotionU.mesh(),
-        dimensionedVector(dimLength, Zero),
-        types
-    );
-    // the displacement of the points as they are (a restart: the written
-    // time's), as a displacement case reads it from its time
-    d.primitiveFieldRef() = mesh.points() - points0;
-    forAll(conditions, patchi)
-    {
-        if (conditions[patchi].fixesValue())
-        {
-            d.boundaryFieldRef()[patchi] ==
-                vectorField
-                (
-                    d.primitiveField(), conditions[patchi].patch().meshPoints()
-                );
-        }
-    }
-    return d;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dcpRBFVelocityMotionSolver::dcpRBFVelocityMotionSolver
@@ -161,9 +120,13 @@ Foam::dcpRBFVelocityMotionSolver::dcpRBFVelocityMotionSolver
     const IOdictionary& dict
 )
 :
-    velocityMotionSolver(mesh, dict, dcpRBFMotionSolver::typeName)
+    velocityMotionSolver(mesh, dict, dcpRBFMotionSolver::typeName),
+    driven_
+    (
+        mesh, *this, pointMotionU_.boundaryField().types(),
+        dcpRBFDrivenDisplacement::fixesOf(pointMotionU_)
+    )
 {
-    const pointIOField points0(points0MotionSolver::points0IO(mesh));
     Info<< dcpRBFMotionSolver::typeName << ": velocity-driven (pointMotionU"
         << (
                found("dynamicFvMesh")
@@ -172,16 +135,6 @@ Foam::dcpRBFVelocityMotionSolver::dcpRBFVelocityMotionSolver
         << "): the points of the patches whose velocity condition fixes the"
         << " value move by deltaT times it each step, as velocityLaplacian"
         << " moves them; the rest is interpolated" << endl;
-    displacement_.reset
-    (
-        new dcpRBFMotionSolver
-        (
-            mesh, *this, displacementField(pointMotionU_, points0), points0
-        )
-    );
-    // registered once the patches' roles are inferred (from the velocity):
-    // what cellDisplacement's conditions read; not written
-    displacement_->pointDisplacement().checkIn();
 }
 
 
@@ -195,21 +148,32 @@ void Foam::dcpRBFVelocityMotionSolver::prescribe()
     velocity.updateCoeffs();
     const scalar deltaT = mesh().time().deltaTValue();
     const pointField& points = mesh().points();
-    const pointField& points0 = displacement_->points0();
-    pointVectorField::Boundary& d =
-        displacement_->pointDisplacement().boundaryFieldRef();
+    const pointField& points0 = driven_.points0();
     forAll(velocity, patchi)
     {
-        if (velocity[patchi].fixesValue())
+        if (driven_.fixes(patchi))
         {
             const labelList& meshPoints = velocity[patchi].patch().meshPoints();
             const vectorField& u =
                 refCast<const valuePointPatchField<vector>>(velocity[patchi]);
-            d[patchi] ==
+            driven_.prescribe
+            (
+                patchi,
                 vectorField(points, meshPoints) - vectorField(points0, meshPoints)
-              + deltaT*u;
+              + deltaT*u
+            );
         }
     }
+}
+
+
+void Foam::dcpRBFVelocityMotionSolver::update(const pointField& newPoints)
+{
+    // the mesh's velocity, as a velocity solver leaves it (the conditions
+    // evaluated: ready for the next step's)
+    pointMotionU_.primitiveFieldRef() =
+        (newPoints - mesh().points())/mesh().time().deltaTValue();
+    pointMotionU_.correctBoundaryConditions();
 }
 
 
@@ -217,48 +181,42 @@ void Foam::dcpRBFVelocityMotionSolver::prescribe()
 
 Foam::tmp<Foam::pointField> Foam::dcpRBFVelocityMotionSolver::curPoints() const
 {
-    return displacement_->curPoints();
+    return driven_.solver().curPoints();
 }
 
 
 void Foam::dcpRBFVelocityMotionSolver::solve()
 {
     prescribe();
-    displacement_->solve();
-    // the mesh's velocity, as a velocity solver leaves it (the conditions
-    // evaluated: ready for the next step's)
-    pointMotionU_.primitiveFieldRef() =
-        (curPoints() - mesh().points())/mesh().time().deltaTValue();
-    pointMotionU_.correctBoundaryConditions();
+    driven_.solver().solve();
+    update(curPoints());
 }
 
 
 Foam::tmp<Foam::pointField> Foam::dcpRBFVelocityMotionSolver::newPoints()
 {
     prescribe();
-    tmp<pointField> tpoints(displacement_->newPoints());
-    pointMotionU_.primitiveFieldRef() =
-        (tpoints() - mesh().points())/mesh().time().deltaTValue();
-    pointMotionU_.correctBoundaryConditions();
+    tmp<pointField> tpoints(driven_.solver().newPoints());
+    update(tpoints());
     return tpoints;
 }
 
 
 void Foam::dcpRBFVelocityMotionSolver::movePoints(const pointField& p)
 {
-    displacement_->movePoints(p);
+    driven_.solver().movePoints(p);
 }
 
 
 void Foam::dcpRBFVelocityMotionSolver::updateMesh(const mapPolyMesh& map)
 {
-    displacement_->updateMesh(map);
+    driven_.solver().updateMesh(map);
 }
 
 
 bool Foam::dcpRBFVelocityMotionSolver::read()
 {
-    return velocityMotionSolver::read() && displacement_->read();
+    return velocityMotionSolver::read() && driven_.solver().read();
 }
 
 

@@ -39,28 +39,26 @@ Foam::labelList Foam::dcpRBFSettings::patchList
 
 Foam::wordList Foam::dcpRBFSettings::classifyPatches
 (
-    const pointVectorField& d,
+    const polyBoundaryMesh& patches,
+    const conditions& given,
     labelList& movingIDs,
-    labelList& staticIDs,
-    const bool velocity
+    labelList& staticIDs
 )
 {
-    const polyBoundaryMesh& patches = d.mesh().mesh().boundaryMesh();
     DynamicList<label> moving, still;
     wordList sliding;
     forAll(patches, patchi)
     {
         const polyPatch& pp = patches[patchi];
-        const pointPatchVectorField& pf = d.boundaryField()[patchi];
         if (pp.coupled() || polyPatch::constraintType(pp.type()))
         {
             continue;   // empty, wedge, symmetry, cyclic, processor, ...
         }
-        if (!pf.fixesValue())
+        if (!given.fixes[patchi])
         {
             sliding.append(pp.name());
         }
-        else if (!velocity && pf.type() == "fixedValue")
+        else if (!given.driven && given.types[patchi] == "fixedValue")
         {
             still.append(patchi);
         }
@@ -75,6 +73,51 @@ Foam::wordList Foam::dcpRBFSettings::classifyPatches
 }
 
 
+Foam::dcpRBFSettings::conditions Foam::dcpRBFSettings::conditionsIn
+(
+    const polyMesh& mesh
+)
+{
+    // the displacement's, else a driving field's (dcpRBFDrivenDisplacement:
+    // a velocity, a component's velocity or displacement)
+    conditions c;
+    const auto take = [&c](const auto& field, const bool driven)
+    {
+        c.name = field.name();
+        c.driven = driven;
+        c.types = field.boundaryField().types();
+        c.fixes.setSize(c.types.size());
+        forAll(c.fixes, patchi)
+        {
+            c.fixes[patchi] = field.boundaryField()[patchi].fixesValue();
+        }
+    };
+    if (const auto* d = mesh.findObject<pointVectorField>("pointDisplacement"))
+    {
+        take(*d, false);
+    }
+    else if (const auto* u = mesh.findObject<pointVectorField>("pointMotionU"))
+    {
+        take(*u, true);
+    }
+    else
+    {
+        for (const word cmpt : {"x", "y", "z"})
+        {
+            for (const word field : {"pointMotionU" + cmpt, "pointDisplacement" + cmpt})
+            {
+                if (const auto* f = mesh.findObject<pointScalarField>(field))
+                {
+                    take(*f, true);
+                    return c;
+                }
+            }
+        }
+    }
+    return c;
+}
+
+
 void Foam::dcpRBFSettings::inferPatches
 (
     const dictionary& dict,
@@ -84,14 +127,10 @@ void Foam::dcpRBFSettings::inferPatches
     const bool report
 )
 {
-    // a velocity-driven case's (dcpRBFVelocityMotionSolver): its velocity
-    // conditions, every fixed-value kind moving (a mesh class may set the
-    // values while running)
-    const pointVectorField* d =
-        mesh.findObject<pointVectorField>("pointDisplacement");
-    const pointVectorField* u =
-        d ? nullptr : mesh.findObject<pointVectorField>("pointMotionU");
-    if (!d && !u)
+    // a driven case's (velocity, component): every fixed-value kind moving
+    // (a mesh class may set a velocity while running)
+    const conditions given(conditionsIn(mesh));
+    if (given.name.empty())
     {
         FatalIOErrorInFunction(dict)
             << "Keywords movingPatches and staticPatches missing, and no"
@@ -100,10 +139,7 @@ void Foam::dcpRBFSettings::inferPatches
             << exit(FatalIOError);
     }
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
-    const wordList sliding
-    (
-        classifyPatches(d ? *d : *u, movingIDs, staticIDs, !d)
-    );
+    const wordList sliding(classifyPatches(patches, given, movingIDs, staticIDs));
     const auto names = [&patches](const labelList& ids)
     {
         wordList n(ids.size());
@@ -130,11 +166,11 @@ void Foam::dcpRBFSettings::inferPatches
     }
     Info<< "dcpRBF: movingPatches " << names(movingIDs)
         << " and staticPatches " << names(staticIDs) << " from the "
+        << given.name << " conditions ("
         << (
-               d
-             ? "pointDisplacement conditions (fixedValue: static; another kind"
-               " that fixes the value: moving); "
-             : "pointMotionU conditions (every kind that fixes the value:"
+               given.driven
+             ? "every kind that fixes the value: moving); "
+             : "fixedValue: static; another kind that fixes the value:"
                " moving); "
            );
     if (sliding.empty())
