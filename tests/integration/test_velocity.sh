@@ -165,9 +165,9 @@ test_sloshing2D_oneWordFreeSurfaceAsVelocityLaplacian() {
 
 # The stock tutorial movingCone (the wedge, velocityComponentLaplacian x:
 # pointMotionUx, its directional diffusivity left in the dictionary)
-# switched by one word: the cone's points as the stock run's to round-off
-# after 100 steps, the mesh valid, the points on their wedge planes and the
-# axis
+# switched by one word: the log names the diffusivity as not read (not the
+# component), the cone's points as the stock run's to round-off after 100
+# steps, the mesh valid, the points on their wedge planes and the axis
 test_movingConeStock_oneWordMovesAsVelocityComponentLaplacian() {
     local tut="$FOAM_TUTORIALS/incompressible/pimpleFoam/laminar/movingCone"
     [ -d "$tut" ] || fail "no OpenFOAM tutorial at $tut (FOAM_TUTORIALS: re-run ./Allwmake)" || return 1
@@ -186,6 +186,9 @@ EOT
     run moveDynamicMesh || return 1
     grep -q "^dcpRBF: driven by pointMotionUx (component x of the point velocity)" log.moveDynamicMesh \
         || fail "the component case not said: $(grep -m3 '^dcpRBF' log.moveDynamicMesh)" || return 1
+    # the component read, the diffusivity not
+    grep -q "^dcpRBF: no dcpRBFCoeffs in dynamicMeshDict: every setting at its default (diffusivity: not dcpRBF's, not read)" log.moveDynamicMesh \
+        || fail "the keywords not read not named as they are: $(grep -m1 'no dcpRBFCoeffs' log.moveDynamicMesh)" || return 1
     meshOkAtEveryTime || return 1
     onWedgeAndAxis 0.0005 1e-6 || return 1
     patchPointsAgree movingWall 0.0005/polyMesh/points stock/0.0005/polyMesh/points 1e-12

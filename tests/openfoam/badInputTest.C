@@ -301,7 +301,7 @@ TEST(BadInput, NoPointDisplacementNorVelocityIsNamed)
     }
     catch (const Foam::error& e)
     {
-        for (const char* says : {"pointDisplacement (a pointVectorField", "pointMotionU", "component", "there is none of them in 0/"})
+        for (const char* says : {"pointDisplacement (a pointVectorField", "point velocity pointMotionU (a pointVectorField)", "keyword component", "there is none of them in 0/"})
         {
             EXPECT_NE(e.message().find(says), std::string::npos) << "message: " << e.message();
         }

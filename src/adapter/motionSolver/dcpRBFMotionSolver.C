@@ -49,12 +49,18 @@ void Foam::dcpRBFMotionSolver::construct()
     const dcpRBFSettings& s = c.settings();
     if (!found(typeName + "Coeffs"))
     {
-        // and what a former motion solver left (diffusivity, component)
-        const wordHashSet openfoams
+        // and what a former motion solver left (diffusivity, component:
+        // read where a component drives the case)
+        wordHashSet openfoams
         ({
             "FoamFile", "dynamicFvMesh", "dynamicFvMeshLibs", "motionSolver",
             "motionSolverLibs", "solver", "libs", "cellZone", "cellSet"
         });
+        const word driving(dcpRBFSettings::conditionsIn(mesh()).name);
+        if (driving != "pointDisplacement" && driving != "pointMotionU")
+        {
+            openfoams.insert("component");
+        }
         string others;
         for (const entry& e : *this)
         {
