@@ -120,7 +120,7 @@ motionSolver dcpRBF;
 diffusivity quadratic inverseDistance (wing);
 EOT
     run moveDynamicMesh || return 1
-    [ "$(grep -c "^dcpRBF: no dcpRBFCoeffs in dynamicMeshDict: every setting at its default (diffusivity: not dcpRBF's, not read)" log.moveDynamicMesh)" -eq 1 ] \
+    [ "$(grep -c "^dcpRBF: no dcpRBFCoeffs in dynamicMeshDict: every setting at its default (diffusivity: not dcpRBF's keywords, not read by it)" log.moveDynamicMesh)" -eq 1 ] \
         || fail "no single line on the missing dcpRBFCoeffs: $(grep -m1 'dcpRBFCoeffs' log.moveDynamicMesh)" || return 1
     grep -q "supportRadius [0-9.e+]* (not given: the mesh's extent), .*selection all)" log.moveDynamicMesh \
         || fail "the default radius not said: $(grep -m1 'boundary points (' log.moveDynamicMesh)" || return 1

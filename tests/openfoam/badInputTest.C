@@ -342,7 +342,8 @@ TEST(Velocity, PointMotionUSelectsTheVelocityDrivenSolver)
 
 // Mesh class interfaceTrackingFvMesh (it sets the free surface's velocity
 // and casts its motion solver to velocityMotionSolver): the velocity-driven
-// solver, a pointDisplacement left in 0/ or not
+// solver, even with a pointDisplacement left in 0/ (without one: as any
+// velocity case, Velocity.PointMotionUSelectsTheVelocityDrivenSolver)
 TEST(Velocity, InterfaceTrackingMeshClassSelectsTheVelocityDrivenSolver)
 {
     testCase c(2, 3, "movingPatches (bottom); staticPatches (top left right); supportRadius 0.5;");

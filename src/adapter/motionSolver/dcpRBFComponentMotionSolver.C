@@ -7,7 +7,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dcpRBFComponentMotionSolver.H"
-#include "addToRunTimeSelectionTable.H"
 #include "valuePointPatchField.H"
 #include "pointFields.H"
 
@@ -16,13 +15,6 @@ License
 namespace Foam
 {
     defineTypeNameAndDebug(dcpRBFComponentMotionSolver, 0);
-
-    addToRunTimeSelectionTable
-    (
-        motionSolver,
-        dcpRBFComponentMotionSolver,
-        dictionary
-    );
 }
 
 
@@ -54,13 +46,7 @@ Foam::word Foam::dcpRBFComponentMotionSolver::fieldName
     }
     for (const word name : {"pointMotionU" + cmpt, "pointDisplacement" + cmpt})
     {
-        if
-        (
-            IOobject
-            (
-                name, mesh.time().timeName(), mesh, IOobject::MUST_READ
-            ).typeHeaderOk<pointScalarField>(false)
-        )
+        if (dcpRBFMotionSolver::inTime<scalar>(mesh, name))
         {
             return name;
         }
@@ -75,15 +61,9 @@ bool Foam::dcpRBFComponentMotionSolver::drives
     const dictionary& dict
 )
 {
-    const auto has = [&mesh](const word& name)
-    {
-        return IOobject
-        (
-            name, mesh.time().timeName(), mesh, IOobject::MUST_READ
-        ).typeHeaderOk<pointVectorField>(false);
-    };
     return
-        !has("pointDisplacement") && !has("pointMotionU")
+        !dcpRBFMotionSolver::inTime<vector>(mesh, "pointDisplacement")
+     && !dcpRBFMotionSolver::inTime<vector>(mesh, "pointMotionU")
      && fieldName(mesh, dict).size();
 }
 
@@ -96,14 +76,25 @@ Foam::dcpRBFComponentMotionSolver::dcpRBFComponentMotionSolver
     const IOdictionary& dict
 )
 :
+    dcpRBFComponentMotionSolver(mesh, dict, fieldName(mesh, dict))
+{}
+
+
+Foam::dcpRBFComponentMotionSolver::dcpRBFComponentMotionSolver
+(
+    const polyMesh& mesh,
+    const IOdictionary& dict,
+    const word& name
+)
+:
     motionSolver(mesh, dict, dcpRBFMotionSolver::typeName),
-    cmpt_(direction(fieldName(mesh, dict).back() - 'x')),
-    velocity_(fieldName(mesh, dict).starts_with("pointMotionU")),
+    cmpt_(direction(name.back() - 'x')),
+    velocity_(name.starts_with("pointMotionU")),
     field_
     (
         IOobject
         (
-            fieldName(mesh, dict),
+            name,
             mesh.time().timeName(),
             mesh,
             IOobject::MUST_READ,
@@ -151,7 +142,10 @@ void Foam::dcpRBFComponentMotionSolver::prescribe()
         const labelList& meshPoints = given[patchi].patch().meshPoints();
         const scalarField& u =
             refCast<const valuePointPatchField<scalar>>(given[patchi]);
-        vectorField d(vectorField(points, meshPoints) - vectorField(points0, meshPoints));
+        vectorField d
+        (
+            vectorField(points, meshPoints) - vectorField(points0, meshPoints)
+        );
         forAll(d, i)
         {
             d[i][cmpt_] = velocity_ ? d[i][cmpt_] + deltaT*u[i] : u[i];
@@ -164,9 +158,10 @@ void Foam::dcpRBFComponentMotionSolver::prescribe()
 void Foam::dcpRBFComponentMotionSolver::update(const pointField& newPoints)
 {
     const scalarField c(newPoints.component(cmpt_));
+    const scalar deltaT = mesh().time().deltaTValue();
     field_.primitiveFieldRef() =
         velocity_
-      ? scalarField((c - mesh().points().component(cmpt_))/mesh().time().deltaTValue())
+      ? scalarField((c - mesh().points().component(cmpt_))/deltaT)
       : scalarField(c - driven_.points0().component(cmpt_));
     field_.correctBoundaryConditions();
 }

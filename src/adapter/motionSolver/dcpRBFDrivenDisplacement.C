@@ -8,7 +8,7 @@ License
 
 #include "dcpRBFDrivenDisplacement.H"
 #include "fixedValuePointPatchFields.H"
-#include "slipPointPatchFields.H"
+#include "zeroGradientPointPatchFields.H"
 #include "pointFields.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -32,15 +32,23 @@ Foam::pointVectorField Foam::dcpRBFDrivenDisplacement::displacementField
         }
         else if
         (
-            !patches[patchi].coupled()
-         && !polyPatch::constraintType(patches[patchi].type())
+            patches[patchi].coupled()
+         || polyPatch::constraintType(patches[patchi].type())
         )
         {
-            vectorTypes[patchi] = slipPointPatchVectorField::typeName;
-        }
-        else
-        {
             vectorTypes[patchi] = patches[patchi].type();
+        }
+        else if
+        (
+            !pointPatchVectorField::pointPatchConstructorTablePtr_->found
+            (
+                vectorTypes[patchi]
+            )
+        )
+        {
+            // a scalar's condition without a vector kind: free, as a
+            // component solver leaves it
+            vectorTypes[patchi] = zeroGradientPointPatchVectorField::typeName;
         }
     }
     pointVectorField d

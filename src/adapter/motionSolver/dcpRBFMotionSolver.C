@@ -74,7 +74,7 @@ void Foam::dcpRBFMotionSolver::construct()
             << ": every setting at its default";
         if (others.size())
         {
-            Info<< " (" << others.c_str() << ": not dcpRBF's, not read)";
+            Info<< " (" << others.c_str() << ": not dcpRBF's keywords, not read by it)";
         }
         Info<< endl;
     }

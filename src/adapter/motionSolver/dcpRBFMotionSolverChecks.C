@@ -24,14 +24,7 @@ const Foam::polyMesh& Foam::dcpRBFMotionSolver::withPointDisplacement
     const dictionary& dict
 )
 {
-    const auto has = [&](const word& name)
-    {
-        return IOobject
-        (
-            name, mesh.time().timeName(), mesh, IOobject::MUST_READ
-        ).typeHeaderOk<pointVectorField>(false);
-    };
-    if (!has("pointDisplacement"))
+    if (!inTime<vector>(mesh, "pointDisplacement"))
     {
         FatalErrorInFunction
             << typeName << " reads the boundary's motion from the point"
@@ -44,6 +37,12 @@ const Foam::polyMesh& Foam::dcpRBFMotionSolver::withPointDisplacement
             << " keyword component, as the component solvers read them), and"
             << " there is none of them in " << mesh.time().timeName() << "/."
             << exit(FatalError);
+    }
+    if (inTime<vector>(mesh, "pointMotionU"))
+    {
+        Info<< typeName << ": pointDisplacement and pointMotionU in "
+            << mesh.time().timeName() << "/: the displacement drives the"
+            << " motion, the velocity is not read" << endl;
     }
     return mesh;
 }

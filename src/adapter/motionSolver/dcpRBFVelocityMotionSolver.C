@@ -14,7 +14,6 @@ Description
 
 #include "dcpRBFVelocityMotionSolver.H"
 #include "dcpRBFComponentMotionSolver.H"
-#include "addToRunTimeSelectionTable.H"
 #include "valuePointPatchField.H"
 #include "pointFields.H"
 
@@ -23,16 +22,15 @@ Description
 namespace Foam
 {
     defineTypeNameAndDebug(dcpRBFVelocityMotionSolver, 0);
+}
 
-    addToRunTimeSelectionTable
-    (
-        motionSolver,
-        dcpRBFVelocityMotionSolver,
-        dictionary
-    );
+namespace
+{
+    using namespace Foam;
 
     //- motionSolver dcpRBF: the velocity-driven, component or displacement
-    //  solver, as the case is
+    //  solver, as the case is (the only name in the motionSolver table: the
+    //  driven solvers are not selected by their own)
     class dcpRBFMotionSolverSelector
     {
         static autoPtr<motionSolver> New
@@ -63,9 +61,11 @@ namespace Foam
         dcpRBFMotionSolverSelector()
         {
             motionSolver::constructdictionaryConstructorTables();
+            // (the name's literal: the word typeName of another file may
+            // not be made yet when this file's statics are)
             motionSolver::dictionaryConstructorTablePtr_->set
             (
-                dcpRBFMotionSolver::typeName, New
+                dcpRBFMotionSolver::typeName_(), New
             );
         }
 
@@ -75,13 +75,13 @@ namespace Foam
             {
                 motionSolver::dictionaryConstructorTablePtr_->erase
                 (
-                    dcpRBFMotionSolver::typeName
+                    dcpRBFMotionSolver::typeName_()
                 );
             }
         }
     };
 
-    static const dcpRBFMotionSolverSelector selectDcpRBF_;
+    const dcpRBFMotionSolverSelector selectDcpRBF_;
 }
 
 
@@ -101,14 +101,9 @@ bool Foam::dcpRBFVelocityMotionSolver::drives
     {
         return true;
     }
-    const auto has = [&mesh](const word& name)
-    {
-        return IOobject
-        (
-            name, mesh.time().timeName(), mesh, IOobject::MUST_READ
-        ).typeHeaderOk<pointVectorField>(false);
-    };
-    return !has("pointDisplacement") && has("pointMotionU");
+    return
+        !dcpRBFMotionSolver::inTime<vector>(mesh, "pointDisplacement")
+     && dcpRBFMotionSolver::inTime<vector>(mesh, "pointMotionU");
 }
 
 
@@ -159,8 +154,8 @@ void Foam::dcpRBFVelocityMotionSolver::prescribe()
             driven_.prescribe
             (
                 patchi,
-                vectorField(points, meshPoints) - vectorField(points0, meshPoints)
-              + deltaT*u
+                vectorField(points, meshPoints)
+              - vectorField(points0, meshPoints) + deltaT*u
             );
         }
     }

@@ -153,11 +153,17 @@ void Foam::dcpRBFSettings::inferPatches
     {
         FatalIOErrorInFunction(dict)
             << "Keywords movingPatches and staticPatches missing, and no"
-            << " patch's pointDisplacement condition prescribes motion (fixed-"
-            << "value kinds other than fixedValue: solidBodyMotionDisplacement,"
-            << " angularOscillatingDisplacement, oscillatingDisplacement,"
-            << " uniformFixedValue, ...). fixedValue patches "
-            << names(staticIDs) << ", sliding " << sliding
+            << " patch's " << given.name << " condition prescribes motion ("
+            << (
+                   given.driven
+                 ? "fixed-value kinds"
+                 : "fixed-value kinds other than fixedValue:"
+                   " solidBodyMotionDisplacement,"
+                   " angularOscillatingDisplacement, oscillatingDisplacement,"
+                   " uniformFixedValue, ..."
+               )
+            << "). fixedValue patches " << names(staticIDs)
+            << ", sliding " << sliding
             << ". Give movingPatches and staticPatches" << exit(FatalIOError);
     }
     if (!report)
