@@ -87,7 +87,7 @@ Foam::dcpRBFComponentMotionSolver::dcpRBFComponentMotionSolver
     const word& name
 )
 :
-    motionSolver(mesh, dict, dcpRBFMotionSolver::typeName),
+    dcpRBFDrivenMotionSolver<motionSolver>(mesh, dict),
     cmpt_(direction(name.back() - 'x')),
     velocity_(name.starts_with("pointMotionU")),
     field_
@@ -101,13 +101,13 @@ Foam::dcpRBFComponentMotionSolver::dcpRBFComponentMotionSolver
             IOobject::AUTO_WRITE
         ),
         pointMesh::New(mesh)
-    ),
-    driven_
-    (
-        mesh, *this, field_.boundaryField().types(),
-        dcpRBFDrivenDisplacement::fixesOf(field_)
     )
 {
+    drive
+    (
+        field_.boundaryField().types(),
+        dcpRBFDrivenDisplacement::fixesOf(field_)
+    );
     const char c = field_.name().back();
     Info<< dcpRBFMotionSolver::typeName << ": driven by " << field_.name()
         << " (component " << c << " of the point "
@@ -132,10 +132,10 @@ void Foam::dcpRBFComponentMotionSolver::prescribe()
     given.updateCoeffs();
     const scalar deltaT = mesh().time().deltaTValue();
     const pointField& points = mesh().points();
-    const pointField& points0 = driven_.points0();
+    const pointField& points0 = driven_->points0();
     forAll(given, patchi)
     {
-        if (!driven_.fixes(patchi))
+        if (!driven_->fixes(patchi))
         {
             continue;
         }
@@ -150,7 +150,7 @@ void Foam::dcpRBFComponentMotionSolver::prescribe()
         {
             d[i][cmpt_] = velocity_ ? d[i][cmpt_] + deltaT*u[i] : u[i];
         }
-        driven_.prescribe(patchi, d);
+        driven_->prescribe(patchi, d);
     }
 }
 
@@ -162,51 +162,8 @@ void Foam::dcpRBFComponentMotionSolver::update(const pointField& newPoints)
     field_.primitiveFieldRef() =
         velocity_
       ? scalarField((c - mesh().points().component(cmpt_))/deltaT)
-      : scalarField(c - driven_.points0().component(cmpt_));
+      : scalarField(c - driven_->points0().component(cmpt_));
     field_.correctBoundaryConditions();
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::tmp<Foam::pointField> Foam::dcpRBFComponentMotionSolver::curPoints() const
-{
-    return driven_.solver().curPoints();
-}
-
-
-void Foam::dcpRBFComponentMotionSolver::solve()
-{
-    prescribe();
-    driven_.solver().solve();
-    update(curPoints());
-}
-
-
-Foam::tmp<Foam::pointField> Foam::dcpRBFComponentMotionSolver::newPoints()
-{
-    prescribe();
-    tmp<pointField> tpoints(driven_.solver().newPoints());
-    update(tpoints());
-    return tpoints;
-}
-
-
-void Foam::dcpRBFComponentMotionSolver::movePoints(const pointField& p)
-{
-    driven_.solver().movePoints(p);
-}
-
-
-void Foam::dcpRBFComponentMotionSolver::updateMesh(const mapPolyMesh& map)
-{
-    driven_.solver().updateMesh(map);
-}
-
-
-bool Foam::dcpRBFComponentMotionSolver::read()
-{
-    return motionSolver::read() && driven_.solver().read();
 }
 
 

@@ -115,13 +115,13 @@ Foam::dcpRBFVelocityMotionSolver::dcpRBFVelocityMotionSolver
     const IOdictionary& dict
 )
 :
-    velocityMotionSolver(mesh, dict, dcpRBFMotionSolver::typeName),
-    driven_
-    (
-        mesh, *this, pointMotionU_.boundaryField().types(),
-        dcpRBFDrivenDisplacement::fixesOf(pointMotionU_)
-    )
+    dcpRBFDrivenMotionSolver<velocityMotionSolver>(mesh, dict)
 {
+    drive
+    (
+        pointMotionU_.boundaryField().types(),
+        dcpRBFDrivenDisplacement::fixesOf(pointMotionU_)
+    );
     Info<< dcpRBFMotionSolver::typeName << ": velocity-driven (pointMotionU"
         << (
                found("dynamicFvMesh")
@@ -143,15 +143,15 @@ void Foam::dcpRBFVelocityMotionSolver::prescribe()
     velocity.updateCoeffs();
     const scalar deltaT = mesh().time().deltaTValue();
     const pointField& points = mesh().points();
-    const pointField& points0 = driven_.points0();
+    const pointField& points0 = driven_->points0();
     forAll(velocity, patchi)
     {
-        if (driven_.fixes(patchi))
+        if (driven_->fixes(patchi))
         {
             const labelList& meshPoints = velocity[patchi].patch().meshPoints();
             const vectorField& u =
                 refCast<const valuePointPatchField<vector>>(velocity[patchi]);
-            driven_.prescribe
+            driven_->prescribe
             (
                 patchi,
                 vectorField(points, meshPoints)
@@ -169,49 +169,6 @@ void Foam::dcpRBFVelocityMotionSolver::update(const pointField& newPoints)
     pointMotionU_.primitiveFieldRef() =
         (newPoints - mesh().points())/mesh().time().deltaTValue();
     pointMotionU_.correctBoundaryConditions();
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::tmp<Foam::pointField> Foam::dcpRBFVelocityMotionSolver::curPoints() const
-{
-    return driven_.solver().curPoints();
-}
-
-
-void Foam::dcpRBFVelocityMotionSolver::solve()
-{
-    prescribe();
-    driven_.solver().solve();
-    update(curPoints());
-}
-
-
-Foam::tmp<Foam::pointField> Foam::dcpRBFVelocityMotionSolver::newPoints()
-{
-    prescribe();
-    tmp<pointField> tpoints(driven_.solver().newPoints());
-    update(tpoints());
-    return tpoints;
-}
-
-
-void Foam::dcpRBFVelocityMotionSolver::movePoints(const pointField& p)
-{
-    driven_.solver().movePoints(p);
-}
-
-
-void Foam::dcpRBFVelocityMotionSolver::updateMesh(const mapPolyMesh& map)
-{
-    driven_.solver().updateMesh(map);
-}
-
-
-bool Foam::dcpRBFVelocityMotionSolver::read()
-{
-    return velocityMotionSolver::read() && driven_.solver().read();
 }
 
 
