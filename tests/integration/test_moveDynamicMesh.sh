@@ -98,7 +98,7 @@ test_airfoil2D_patchListsInferred_samePointsAsListed() {
 }
 
 # One word: a dynamicMeshDict with motionSolver dcpRBF and no dcpRBFCoeffs
-# (and the former solver's diffusivity left in it) moves the mesh as
+# (and the former solver's diffusivity and coefficients left in it) moves the mesh as
 # dcpRBFCoeffs { supportRadius D; } does, D the reference mesh's diagonal in
 # its plane (the default radius), the patch lists inferred, selection all
 # (102 boundary points, at most maxPoints): the points bit for bit; the log
@@ -118,9 +118,10 @@ dynamicFvMesh dynamicMotionSolverFvMesh;
 motionSolverLibs ("libdcpRBF.so");
 motionSolver dcpRBF;
 diffusivity quadratic inverseDistance (wing);
+displacementLaplacianCoeffs { diffusivity uniform; }
 EOT
     run moveDynamicMesh || return 1
-    [ "$(grep -c "^dcpRBF: no dcpRBFCoeffs in dynamicMeshDict: every setting at its default (diffusivity: not dcpRBF's keywords, not read by it)" log.moveDynamicMesh)" -eq 1 ] \
+    [ "$(grep -c "^dcpRBF: no dcpRBFCoeffs in dynamicMeshDict: every setting at its default (diffusivity displacementLaplacianCoeffs: not dcpRBF's keywords, which it ignores; a mesh class may read them)" log.moveDynamicMesh)" -eq 1 ] \
         || fail "no single line on the missing dcpRBFCoeffs: $(grep -m1 'dcpRBFCoeffs' log.moveDynamicMesh)" || return 1
     grep -q "supportRadius [0-9.e+]* (not given: the mesh's extent), .*selection all)" log.moveDynamicMesh \
         || fail "the default radius not said: $(grep -m1 'boundary points (' log.moveDynamicMesh)" || return 1

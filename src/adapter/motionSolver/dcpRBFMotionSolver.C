@@ -57,7 +57,9 @@ void Foam::dcpRBFMotionSolver::construct()
             "motionSolverLibs", "solver", "libs", "cellZone", "cellSet"
         });
         const word driving(dcpRBFSettings::conditionsIn(mesh()).name);
-        if (driving != "pointDisplacement" && driving != "pointMotionU")
+        const bool byComponent =
+            driving != "pointDisplacement" && driving != "pointMotionU";
+        if (byComponent)
         {
             openfoams.insert("component");
         }
@@ -65,7 +67,10 @@ void Foam::dcpRBFMotionSolver::construct()
         for (const entry& e : *this)
         {
             const word& k = e.keyword();
-            if (!openfoams.found(k) && !(e.isDict() && k.ends_with("Coeffs")))
+            const bool componentCoeffs =
+                byComponent && e.isDict()
+             && k.ends_with("ComponentLaplacianCoeffs");
+            if (!openfoams.found(k) && !componentCoeffs)
             {
                 others += (others.empty() ? "" : " ") + k;
             }
@@ -74,7 +79,8 @@ void Foam::dcpRBFMotionSolver::construct()
             << ": every setting at its default";
         if (others.size())
         {
-            Info<< " (" << others.c_str() << ": not dcpRBF's keywords, not read by it)";
+            Info<< " (" << others.c_str() << ": not dcpRBF's keywords, which"
+                << " it ignores; a mesh class may read them)";
         }
         Info<< endl;
     }
