@@ -340,6 +340,25 @@ TEST(Velocity, PointMotionUSelectsTheVelocityDrivenSolver)
     EXPECT_TRUE(s.staticPatchIDs().empty());
 }
 
+// A pointMotionU beside the pointDisplacement of a displacement case: the
+// displacement drives the motion, and the log says the velocity is not read
+TEST(Velocity, PointMotionUBesideAPointDisplacementSaidNotRead)
+{
+    testCase c(2, 3, "movingPatches (bottom); staticPatches (top left right); supportRadius 0.5;");
+    c.write
+    (
+        "0/pointMotionU", "pointVectorField",
+        "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+        "boundaryField { \".*\" { type fixedValue; value uniform (0 0 0); }"
+        " \"(front|back)\" { type empty; } }\n"
+    );
+    autoPtr<motionSolver> ms;
+    const std::string log(captured([&]() { ms = select(c); }));
+    EXPECT_TRUE(isA<dcpRBFMotionSolver>(ms()));
+    EXPECT_FALSE(isA<velocityMotionSolver>(ms()));
+    EXPECT_NE(log.find("pointDisplacement and pointMotionU in 0/: the displacement drives the motion, the velocity is not read"), std::string::npos) << log;
+}
+
 // Mesh class interfaceTrackingFvMesh (it sets the free surface's velocity
 // and casts its motion solver to velocityMotionSolver): the velocity-driven
 // solver, even with a pointDisplacement left in 0/ (without one: as any
