@@ -50,6 +50,8 @@ std::vector<badInput> catalogue()
         {"NegativeRadius", mv + st + "supportRadius -1;", "supportRadius"},
         {"UnknownKeyword", mv + st + r + "suportRadius 2;", "suportRadius"},
         {"MisspeltRequiredKeyword", mv + st + "suportRadius 0.5;", "Unknown keyword suportRadius"},
+        {"MisspeltKeywordNearestSuggested", mv + st + r + "suportRadius 2;", "(did you mean supportRadius?)"},
+        {"MisspeltKeywordCaseSuggested", mv + st + r + "qualityfloor 0.1;", "(did you mean qualityFloor?)"},
         {"PolynomialNotBool", mv + st + r + "polynomial maybe;", "polynomial"},
         {"UnknownFarField", mv + st + r + "farField frozen;", "farField"},
         {"UnknownCellZone", mv + st + r + "cellZone nowhere;", "Keyword cellZone: no cellZone nowhere"},
@@ -214,6 +216,23 @@ INSTANTIATE_TEST_SUITE_P
     Catalogue, BadInput, ::testing::ValuesIn(catalogue()),
     [](const auto& info) { return info.param.name; }
 );
+
+
+// A keyword far from every known one gets no guess (only the allowed list)
+TEST(BadInput, UnknownKeywordFarFromAnyHasNoGuess)
+{
+    testCase c(2, 3, "movingPatches (bottom); staticPatches (top left right); supportRadius 0.5; smoothness 3;");
+    try
+    {
+        autoPtr<motionSolver> ms(select(c));
+        FAIL() << "no error for an unknown keyword";
+    }
+    catch (const Foam::IOerror& e)
+    {
+        EXPECT_NE(e.message().find("Unknown keyword smoothness"), std::string::npos) << e.message();
+        EXPECT_EQ(e.message().find("did you mean"), std::string::npos) << e.message();
+    }
+}
 
 
 // Without dcpRBFCoeffs (the settings at the top level, or the sub-dictionary

@@ -18,6 +18,55 @@ Description
 #include "OStringStream.H"
 #include "dcpRBFVersion.H"
 
+#include <algorithm>
+#include <cctype>
+#include <vector>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+    //- The edit distance of a and b, letters' case ignored (Levenshtein:
+    //  insertions, deletions and substitutions)
+    std::size_t editDistance(const std::string& a, const std::string& b)
+    {
+        std::vector<std::size_t> row(b.size() + 1);
+        for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+        for (std::size_t i = 1; i <= a.size(); ++i)
+        {
+            std::size_t diagonal = row[0];
+            row[0] = i;
+            for (std::size_t j = 1; j <= b.size(); ++j)
+            {
+                const std::size_t above = row[j];
+                const bool same = std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
+                row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + !same});
+                diagonal = above;
+            }
+        }
+        return row[b.size()];
+    }
+
+    //- The known keyword nearest to a misspelt one, if near enough to be a
+    //  slip (at most 2 edits, or a third of its length); else empty
+    Foam::word nearest(const Foam::word& given, const Foam::wordList& known)
+    {
+        Foam::word best;
+        std::size_t bestDistance = std::max<std::size_t>(2, given.size()/3) + 1;
+        for (const Foam::word& w : known)
+        {
+            const std::size_t d = editDistance(given, w);
+            if (d < bestDistance)
+            {
+                best = w;
+                bestDistance = d;
+            }
+        }
+        return best;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::dcpRBFDictReader::checkKeywords(const wordList& known) const
@@ -31,9 +80,12 @@ void Foam::dcpRBFDictReader::checkKeywords(const wordList& known) const
             {
                 allowed += (allowed.empty() ? "" : " ") + w;
             }
+            const word guess(nearest(e.keyword(), known));
             FatalIOErrorInFunction(dict_)
                 << "Unknown keyword " << e.keyword() << " in "
-                << dict_.dictName() << ". Allowed keywords: " << allowed.c_str()
+                << dict_.dictName()
+                << (guess.empty() ? string() : " (did you mean " + guess + "?)").c_str()
+                << ". Allowed keywords: " << allowed.c_str()
                 << exit(FatalIOError);
         }
     }
