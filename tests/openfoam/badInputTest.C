@@ -51,7 +51,7 @@ std::vector<badInput> catalogue()
         {"UnknownKeyword", mv + st + r + "suportRadius 2;", "suportRadius"},
         {"MisspeltRequiredKeyword", mv + st + "suportRadius 0.5;", "Unknown keyword suportRadius"},
         {"MisspeltKeywordNearestSuggested", mv + st + r + "suportRadius 2;", "(did you mean supportRadius?)"},
-        {"MisspeltKeywordCaseSuggested", mv + st + r + "qualityfloor 0.1;", "(did you mean qualityFloor?)"},
+        {"MisspeltKeywordCaseSuggested", mv + st + "SUPPORTRADIUS 2;", "(did you mean supportRadius?)"},
         {"PolynomialNotBool", mv + st + r + "polynomial maybe;", "polynomial"},
         {"UnknownFarField", mv + st + r + "farField frozen;", "farField"},
         {"UnknownCellZone", mv + st + r + "cellZone nowhere;", "Keyword cellZone: no cellZone nowhere"},
