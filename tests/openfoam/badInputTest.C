@@ -359,6 +359,30 @@ TEST(Velocity, PointMotionUSelectsTheVelocityDrivenSolver)
     EXPECT_TRUE(s.staticPatchIDs().empty());
 }
 
+// A velocity case whose velocity fixes no patch's value, without patch
+// lists: refused, naming the velocity field the roles were inferred from
+TEST(Velocity, NothingPrescribedRefusedNamingTheVelocity)
+{
+    testCase c(2, 3, "supportRadius 0.5;");
+    rm(c.dir()/"0/pointDisplacement");
+    c.write
+    (
+        "0/pointMotionU", "pointVectorField",
+        "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+        "boundaryField { \".*\" { type slip; }"
+        " \"(front|back)\" { type empty; } }\n"
+    );
+    try
+    {
+        autoPtr<motionSolver> ms(select(c));
+        FAIL() << "no error when no patch's velocity is prescribed";
+    }
+    catch (const Foam::IOerror& e)
+    {
+        EXPECT_NE(e.message().find("no patch's pointMotionU condition prescribes motion (fixed-value kinds)"), std::string::npos) << e.message();
+    }
+}
+
 // A pointMotionU beside the pointDisplacement of a displacement case: the
 // displacement drives the motion, and the log says the velocity is not read
 TEST(Velocity, PointMotionUBesideAPointDisplacementSaidNotRead)

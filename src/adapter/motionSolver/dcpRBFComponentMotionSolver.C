@@ -103,11 +103,7 @@ Foam::dcpRBFComponentMotionSolver::dcpRBFComponentMotionSolver
         pointMesh::New(mesh)
     )
 {
-    drive
-    (
-        field_.boundaryField().types(),
-        dcpRBFDrivenDisplacement::fixesOf(field_)
-    );
+    drive(dcpRBFSettings::conditionsOf(field_, true));
     const char c = field_.name().back();
     Info<< dcpRBFMotionSolver::typeName << ": driven by " << field_.name()
         << " (component " << c << " of the point "

@@ -117,11 +117,7 @@ Foam::dcpRBFVelocityMotionSolver::dcpRBFVelocityMotionSolver
 :
     dcpRBFDrivenMotionSolver<velocityMotionSolver>(mesh, dict)
 {
-    drive
-    (
-        pointMotionU_.boundaryField().types(),
-        dcpRBFDrivenDisplacement::fixesOf(pointMotionU_)
-    );
+    drive(dcpRBFSettings::conditionsOf(pointMotionU_, true));
     Info<< dcpRBFMotionSolver::typeName << ": velocity-driven (pointMotionU"
         << (
                found("dynamicFvMesh")

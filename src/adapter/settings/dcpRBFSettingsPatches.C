@@ -80,41 +80,25 @@ Foam::dcpRBFSettings::conditions Foam::dcpRBFSettings::conditionsIn
 {
     // the displacement's, else a driving field's (dcpRBFDrivenDisplacement:
     // a velocity, a component's velocity or displacement)
-    conditions c;
-    const auto take = [&c](const auto& field, const bool driven)
-    {
-        c.name = field.name();
-        c.driven = driven;
-        c.types = field.boundaryField().types();
-        c.fixes.setSize(c.types.size());
-        forAll(c.fixes, patchi)
-        {
-            c.fixes[patchi] = field.boundaryField()[patchi].fixesValue();
-        }
-    };
     if (const auto* d = mesh.findObject<pointVectorField>("pointDisplacement"))
     {
-        take(*d, false);
+        return conditionsOf(*d, false);
     }
-    else if (const auto* u = mesh.findObject<pointVectorField>("pointMotionU"))
+    if (const auto* u = mesh.findObject<pointVectorField>("pointMotionU"))
     {
-        take(*u, true);
+        return conditionsOf(*u, true);
     }
-    else
+    for (const word cmpt : {"x", "y", "z"})
     {
-        for (const word cmpt : {"x", "y", "z"})
+        for (const word field : {"pointMotionU" + cmpt, "pointDisplacement" + cmpt})
         {
-            for (const word field : {"pointMotionU" + cmpt, "pointDisplacement" + cmpt})
+            if (const auto* f = mesh.findObject<pointScalarField>(field))
             {
-                if (const auto* f = mesh.findObject<pointScalarField>(field))
-                {
-                    take(*f, true);
-                    return c;
-                }
+                return conditionsOf(*f, true);
             }
         }
     }
-    return c;
+    return conditions();
 }
 
 
